@@ -1,0 +1,46 @@
+#pragma once
+// Pinhole perspective and orthographic cameras built on the lecture's eye
+// frame (u, v, w): w points from the look-at point back to the eye, u to the
+// right, v up. Pixel (x, y) has its centre at (x + 0.5, y + 0.5); row 0 is the
+// top of the image.
+
+#include "geometry/ray.h"
+#include "geometry/vec.h"
+
+namespace raylab {
+
+struct CameraFrame {
+    Vec3 eye;
+    Vec3 u, v, w;  ///< orthonormal, right-handed: u × v = w
+};
+
+class Camera {
+public:
+    enum class Projection { Perspective, Orthographic };
+
+    /// Perspective camera; vfovDegrees is the full vertical field of view,
+    /// measured between the top and bottom image edges.
+    static Camera perspective(const Vec3& eye, const Vec3& lookAt, const Vec3& up,
+                              double vfovDegrees);
+    /// Orthographic camera looking along `direction`; viewWidth is the width
+    /// of the view plane in world units.
+    static Camera orthographic(const Vec3& eye, const Vec3& direction, const Vec3& up,
+                               double viewWidth);
+
+    /// Ray through the continuous image position (px, py), in pixels from the
+    /// top-left corner, for an image of width × height pixels.
+    Ray generateRay(double px, double py, int width, int height) const;
+
+    const CameraFrame& frame() const { return m_frame; }
+    Projection projection() const { return m_projection; }
+    double vfovDegrees() const { return m_vfovDegrees; }
+    double viewWidth() const { return m_viewWidth; }
+
+private:
+    CameraFrame m_frame;
+    Projection m_projection = Projection::Perspective;
+    double m_vfovDegrees = 45;
+    double m_viewWidth = 2;
+};
+
+}  // namespace raylab

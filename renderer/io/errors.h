@@ -1,0 +1,39 @@
+#pragma once
+// Errors that reach the user as one line: "raylab: error: FILE:LINE: message".
+
+#include <stdexcept>
+#include <string>
+
+namespace raylab {
+
+/// Bad input (a scene file, a mesh, a value): exit code 1.
+class InputError : public std::runtime_error {
+public:
+    InputError(std::string file, int line, const std::string& message)
+        : std::runtime_error(message), m_file(std::move(file)), m_line(line) {}
+    explicit InputError(const std::string& message) : InputError("", 0, message) {}
+
+    const std::string& file() const { return m_file; }
+    int line() const { return m_line; }  ///< 0 when no line applies
+
+    /// "FILE:LINE: message", "FILE: message" or "message".
+    std::string located() const {
+        std::string s;
+        if (!m_file.empty()) s += m_file + ":";
+        if (m_line > 0) s += std::to_string(m_line) + ":";
+        if (!s.empty()) s += " ";
+        return s + what();
+    }
+
+private:
+    std::string m_file;
+    int m_line = 0;
+};
+
+/// Bad command-line usage: exit code 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace raylab

@@ -1,0 +1,74 @@
+#pragma once
+// Counters and timings of one render; written by --stats as JSON and printed
+// in the end-of-render summary.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+enum class RayType { Camera = 0, Shadow, Reflection, Refraction, Count };
+
+inline const char* rayTypeName(RayType t) {
+    switch (t) {
+        case RayType::Camera: return "camera";
+        case RayType::Shadow: return "shadow";
+        case RayType::Reflection: return "reflection";
+        case RayType::Refraction: return "refraction";
+        default: return "?";
+    }
+}
+
+/// Ray counts per type and per depth (depth 1 = camera ray). Plain counters,
+/// one instance per thread, summed at the end (deterministic).
+struct RayCounters {
+    static constexpr int kMaxTrackedDepth = 64;
+    std::array<std::array<uint64_t, kMaxTrackedDepth + 1>, size_t(RayType::Count)> byDepth{};
+    uint64_t cameraHits = 0;
+
+    void count(RayType type, int depth) {
+        byDepth[size_t(type)][depth < kMaxTrackedDepth ? depth : kMaxTrackedDepth]++;
+    }
+    uint64_t total(RayType type) const {
+        uint64_t n = 0;
+        for (uint64_t c : byDepth[size_t(type)]) n += c;
+        return n;
+    }
+    uint64_t total() const {
+        uint64_t n = 0;
+        for (size_t t = 0; t < size_t(RayType::Count); ++t) n += total(RayType(t));
+        return n;
+    }
+    RayCounters& operator+=(const RayCounters& o) {
+        for (size_t t = 0; t < byDepth.size(); ++t)
+            for (size_t d = 0; d < byDepth[t].size(); ++d) byDepth[t][d] += o.byDepth[t][d];
+        cameraHits += o.cameraHits;
+        return *this;
+    }
+};
+
+struct RenderStats {
+    RayCounters rays;
+    double parseSeconds = 0;
+    double buildSeconds = 0;
+    double renderSeconds = 0;
+    double writeSeconds = 0;
+    uint64_t primitives = 0;
+    std::vector<std::string> effects;
+    int threads = 0;
+    std::string accel;
+    int width = 0, height = 0, spp = 0, maxDepth = 0;
+    uint64_t nonFiniteSamples = 0;  ///< samples whose radiance was NaN/Inf and was replaced
+
+    /// Million rays (all types) per second of render time.
+    double mraysPerSecond() const {
+        return renderSeconds > 0 ? double(rays.total()) / renderSeconds * 1e-6 : 0;
+    }
+
+    /// The --stats JSON document.
+    std::string toJson() const;
+};
+
+}  // namespace raylab

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages raylab needs, only those that are missing.
+# Idempotent: a second run does nothing and needs no network. Uses sudo when
+# not root. Usage: scripts/install-deps.sh [--optional]
+#   --optional  also the tools for fuzzing and distributed rendering
+set -euo pipefail
+
+required=(
+  cmake make g++ pkg-config
+  libembree-dev         # Embree 3: BVH build and traversal, user geometry
+  libtbb-dev            # oneTBB: parallel tile loop
+  libopenexr-dev        # OpenEXR: HDR output with AOV layers
+  libtinyobjloader-dev  # tinyobjloader: OBJ/MTL meshes
+  doctest-dev           # doctest: unit and render tests
+  libpng-dev            # libpng: the tone-mapped PNG preview
+)
+optional=(
+  clang libclang-rt-14-dev  # libFuzzer targets (make fuzz)
+  libopenmpi-dev openmpi-bin # distributed rendering (-DRAYLAB_MPI=ON)
+)
+
+wanted=("${required[@]}")
+if [[ "${1:-}" == "--optional" ]]; then wanted+=("${optional[@]}"); fi
+
+missing=()
+for pkg in "${wanted[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  exit 0
+fi
+
+echo "raylab: installing missing packages: ${missing[*]}" >&2
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
