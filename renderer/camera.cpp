@@ -1,0 +1,77 @@
+#include "renderer/camera.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace raylab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Builds the (u, v, w) frame with w = -viewDirection. Rejects a zero view
+/// direction and an up vector that is zero or parallel to the view.
+CameraFrame makeFrame(const Vec3& eye, const Vec3& viewDirection, const Vec3& up) {
+    if (!isFinite(eye) || !isFinite(viewDirection) || !isFinite(up))
+        throw std::invalid_argument("camera: eye, direction and up must be finite");
+    const double viewLen = length(viewDirection);
+    if (!(viewLen > 0)) throw std::invalid_argument("camera: eye and look-at point coincide");
+    const Vec3 w = -viewDirection / viewLen;
+    const double upLen = length(up);
+    if (!(upLen > 0)) throw std::invalid_argument("camera: up vector has zero length");
+    const Vec3 side = cross(up / upLen, w);
+    // sin of the angle between up and the view direction; below ~1e-9 the frame is undefined.
+    if (!(length(side) > 1e-9))
+        throw std::invalid_argument("camera: up vector is parallel to the view direction");
+    CameraFrame f;
+    f.eye = eye;
+    f.w = w;
+    f.u = normalize(side);
+    f.v = cross(f.w, f.u);
+    return f;
+}
+
+}  // namespace
+
+Camera Camera::perspective(const Vec3& eye, const Vec3& lookAt, const Vec3& up,
+                           double vfovDegrees) {
+    if (!(vfovDegrees > 0 && vfovDegrees < 180))
+        throw std::invalid_argument("camera: field of view must be in (0, 180) degrees (got " +
+                                    std::to_string(vfovDegrees) + ")");
+    Camera c;
+    c.m_frame = makeFrame(eye, lookAt - eye, up);
+    c.m_projection = Projection::Perspective;
+    c.m_vfovDegrees = vfovDegrees;
+    return c;
+}
+
+Camera Camera::orthographic(const Vec3& eye, const Vec3& direction, const Vec3& up,
+                            double viewWidth) {
+    if (!(viewWidth > 0 && std::isfinite(viewWidth)))
+        throw std::invalid_argument("camera: view width must be > 0 (got " +
+                                    std::to_string(viewWidth) + ")");
+    Camera c;
+    c.m_frame = makeFrame(eye, direction, up);
+    c.m_projection = Projection::Orthographic;
+    c.m_viewWidth = viewWidth;
+    return c;
+}
+
+Ray Camera::generateRay(double px, double py, int width, int height) const {
+    const double aspect = double(width) / double(height);
+    // Normalised screen coordinates in [-1, 1], +y up (row 0 is the top).
+    const double sx = 2.0 * px / width - 1.0;
+    const double sy = 1.0 - 2.0 * py / height;
+    const CameraFrame& f = m_frame;
+    if (m_projection == Projection::Perspective) {
+        const double halfHeight = std::tan(0.5 * m_vfovDegrees * kPi / 180.0);
+        const double halfWidth = halfHeight * aspect;
+        const Vec3 d = f.u * (sx * halfWidth) + f.v * (sy * halfHeight) - f.w;
+        return Ray{f.eye, normalize(d)};
+    }
+    const double halfWidth = 0.5 * m_viewWidth;
+    const double halfHeight = halfWidth / aspect;
+    return Ray{f.eye + f.u * (sx * halfWidth) + f.v * (sy * halfHeight), -f.w};
+}
+
+}  // namespace raylab
