@@ -29,7 +29,7 @@ struct RayCounters {
     uint64_t cameraHits = 0;
 
     void count(RayType type, int depth) {
-        byDepth[size_t(type)][depth < kMaxTrackedDepth ? depth : kMaxTrackedDepth]++;
+        byDepth[size_t(type)][depth < 0 ? 0 : (depth < kMaxTrackedDepth ? depth : kMaxTrackedDepth)]++;
     }
     uint64_t total(RayType type) const {
         uint64_t n = 0;

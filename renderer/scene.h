@@ -61,6 +61,7 @@ struct SurfaceInteraction {
 struct Scene {
     std::string sourcePath;  ///< file the scene came from (for messages)
     Camera camera;
+    double cameraNear = 0;   ///< camera rays start at this distance from the eye (NFF hither)
     ImageSettings image;
     Color background{0, 0, 0};
     Color ambient{0, 0, 0};  ///< Ia

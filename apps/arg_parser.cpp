@@ -1,0 +1,53 @@
+#include "apps/arg_parser.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "renderer/io/errors.h"
+
+namespace raylab {
+
+std::string ArgParser::next() { return m_args.at(m_pos++); }
+
+bool ArgParser::peekFlag() const {
+    return !done() && m_args[m_pos].size() > 1 && m_args[m_pos][0] == '-';
+}
+
+std::string ArgParser::value(const std::string& flag) {
+    if (done()) throw UsageError(flag + ": missing value");
+    return next();
+}
+
+long long ArgParser::integer(const std::string& flag, long long lo, long long hi) {
+    const std::string v = value(flag);
+    errno = 0;
+    char* end = nullptr;
+    const long long x = std::strtoll(v.c_str(), &end, 10);
+    if (v.empty() || *end != '\0' || errno == ERANGE || x < lo || x > hi)
+        throw UsageError(flag + ": expected an integer in [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "] (got '" + v + "')");
+    return x;
+}
+
+double ArgParser::number(const std::string& flag, double lo, double hi) {
+    const std::string v = value(flag);
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !std::isfinite(x) || x < lo || x > hi)
+        throw UsageError(flag + ": expected a number in [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "] (got '" + v + "')");
+    return x;
+}
+
+std::string ArgParser::choice(const std::string& flag, const std::vector<std::string>& choices) {
+    const std::string v = value(flag);
+    std::string list;
+    for (const std::string& c : choices) {
+        if (c == v) return v;
+        list += (list.empty() ? "" : "|") + c;
+    }
+    throw UsageError(flag + ": expected " + list + " (got '" + v + "')");
+}
+
+}  // namespace raylab

@@ -1,0 +1,32 @@
+#pragma once
+// A small, strict command-line parser: every value is validated, and any
+// problem is a raylab::UsageError (exit code 2) naming the flag.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+class ArgParser {
+public:
+    ArgParser(std::vector<std::string> args) : m_args(std::move(args)) {}
+
+    bool done() const { return m_pos >= m_args.size(); }
+    /// The next argument, consumed.
+    std::string next();
+    /// True when the next argument looks like a flag ("-x", "--xyz").
+    bool peekFlag() const;
+    /// The value after the flag `flag`, consumed (error when missing).
+    std::string value(const std::string& flag);
+    long long integer(const std::string& flag, long long lo, long long hi);
+    double number(const std::string& flag, double lo, double hi);
+    /// One of `choices`.
+    std::string choice(const std::string& flag, const std::vector<std::string>& choices);
+
+private:
+    std::vector<std::string> m_args;
+    size_t m_pos = 0;
+};
+
+}  // namespace raylab

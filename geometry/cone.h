@@ -1,0 +1,59 @@
+#pragma once
+// Cylinders, cones and truncated cones between two end points, open or with
+// disk caps. One class: the radius varies linearly along the axis,
+//   r(z) = baseRadius + k·z,  k = (apexRadius - baseRadius) / height,
+// in a local frame with the base at the origin and z along the axis, so the
+// side is x² + y² = r(z)² restricted to 0 <= z <= height (which also rejects
+// hits on a cone's mirror nappe). The quadratic in t uses the stable root
+// form, so a ray along a cone's generator line (a = 0, one real root) and a
+// ray along the axis (a = b = 0: caps only) need no special NaN handling.
+
+#include <optional>
+
+#include "geometry/frame.h"
+#include "geometry/primitives.h"
+#include "geometry/shape.h"
+
+namespace raylab {
+
+class Cone final : public Shape {
+public:
+    /// Validated by makeCone(): base and apex finite and distinct, radii finite
+    /// and >= 0, not both 0.
+    explicit Cone(const ConeParams& params);
+
+    /// Box of the two end disks (r·sqrt(1 - a_i²) per axis around each end), padded.
+    Bounds3 bounds() const override;
+    /// Closest accepted hit on the side (0 <= z <= height, rim included) or on a
+    /// cap (distance from the axis <= the end radius). Facing is the sign of
+    /// dot(d, outward normal), taken exactly from the root structure for the
+    /// side. u, v: side u = 0, v = z / height in [0, 1]; base cap u = ρ / baseRadius,
+    /// v = -1; apex cap u = ρ / apexRadius, v = 2 (surfaceAt uses v to tell them apart).
+    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// Point and outward normal: the side's (x, y, -ρ·k) in the local frame,
+    /// -axis on the base cap and +axis on the apex cap. At a cone's apex
+    /// (ρ = 0) the normal is the mean of the side normals there, ±axis.
+    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// "cylinder" when the radii are equal, "cone" otherwise.
+    const char* kind() const override;
+
+    const Vec3& base() const { return m_base; }
+    const Vec3& axis() const { return m_frame.n; }
+    double height() const { return m_height; }
+    double baseRadius() const { return m_r0; }
+    double apexRadius() const { return m_r1; }
+    bool capped() const { return m_capped; }
+
+private:
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
+
+    Vec3 m_base;
+    Frame m_frame;  ///< n = unit axis from base to apex
+    double m_height;
+    double m_r0, m_r1;
+    double m_slope;  ///< k = (r1 - r0) / height, exactly 0 for a cylinder
+    bool m_capped;
+};
+
+}  // namespace raylab

@@ -1,0 +1,61 @@
+#include "geometry/disk.h"
+
+#include "geometry/plane_hit.h"
+#include "geometry/primitives.h"
+#include "geometry/validate.h"
+
+namespace raylab {
+
+Disk::Disk(const Vec3& centre, const Vec3& normal, double radius)
+    : m_centre(centre), m_frame(Frame::fromNormal(normal)), m_radius(radius) {}
+
+Bounds3 Disk::bounds() const {
+    const Vec3 e = diskHalfExtent(m_frame.n, m_radius);
+    return Bounds3(m_centre - e, m_centre + e).padded();
+}
+
+template <class T>
+std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMax) const {
+    using V = Vec3T<T>;
+    const V n(m_frame.n);
+    const V c(m_centre);
+    const V o(ray.o);
+    const V d(ray.d);
+
+    T t, cosine;
+    if (!intersectPlane(n, c, o, d, t, cosine)) return std::nullopt;
+    if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
+    const double td = static_cast<double>(t);
+    if (!(tMin < td && td < tMax)) return std::nullopt;
+
+    const V local = o + d * t - c;
+    const T r = static_cast<T>(m_radius);
+    // Distance within the plane; the normal component is rounding noise.
+    const T u = dot(local, V(m_frame.t));
+    const T v = dot(local, V(m_frame.b));
+    if (!(u * u + v * v <= r * r)) return std::nullopt;
+    return ShapeHit{td, static_cast<double>(u / r), static_cast<double>(v / r)};
+}
+
+std::optional<ShapeHit> Disk::intersect(const Ray& ray, double tMin, double tMax) const {
+    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
+                                           : intersectT<double>(ray, tMin, tMax);
+}
+
+SurfaceGeometry Disk::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+    SurfaceGeometry g;
+    const Vec3 p = ray.at(hit.t);
+    g.p = p - m_frame.n * dot(m_frame.n, p - m_centre);
+    g.ng = g.ns = m_frame.n;
+    g.frontFace = dot(ray.d, m_frame.n) < 0;
+    return g;
+}
+
+std::unique_ptr<Shape> makeDisk(const Vec3& centre, const Vec3& normal, double radius) {
+    requireFinite("disk", "centre", centre);
+    const Vec3 n = requireDirection("disk", "normal", normal);
+    requirePositive("disk", "radius", radius);
+    return std::make_unique<Disk>(centre, n, radius);
+}
+
+}  // namespace raylab

@@ -1,0 +1,40 @@
+#pragma once
+// Ray-disk intersection: the plane through the centre, clipped to the radius.
+
+#include <optional>
+
+#include "geometry/frame.h"
+#include "geometry/shape.h"
+
+namespace raylab {
+
+class Disk final : public Shape {
+public:
+    /// Disk of `radius` around `centre` with unit outward `normal`; parameters
+    /// are validated by makeDisk().
+    Disk(const Vec3& centre, const Vec3& normal, double radius);
+
+    /// Box of the disk: centre ± r·sqrt(1 - n_i²) per axis, padded.
+    Bounds3 bounds() const override;
+    /// Plane hit accepted when its distance from the centre is <= radius (the
+    /// rim belongs to the disk). u, v = in-plane coordinates of the hit relative
+    /// to the centre along the frame tangents, divided by the radius.
+    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// Hit point (projected onto the plane) and the outward normal.
+    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    const char* kind() const override { return "disk"; }
+
+    const Vec3& centre() const { return m_centre; }
+    const Vec3& normal() const { return m_frame.n; }
+    double radius() const { return m_radius; }
+
+private:
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
+
+    Vec3 m_centre;
+    Frame m_frame;
+    double m_radius;
+};
+
+}  // namespace raylab

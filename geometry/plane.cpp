@@ -1,0 +1,72 @@
+#include "geometry/plane.h"
+
+#include <cmath>
+
+#include "geometry/plane_hit.h"
+#include "geometry/primitives.h"
+#include "geometry/validate.h"
+
+namespace raylab {
+
+Plane::Plane(const Vec3& point, const Vec3& normal, double halfExtent)
+    : m_point(point), m_frame(Frame::fromNormal(normal)), m_halfExtent(halfExtent) {}
+
+Bounds3 Plane::bounds() const {
+    const Vec3 du = m_frame.t * m_halfExtent;
+    const Vec3 dv = m_frame.b * m_halfExtent;
+    Bounds3 b(m_point - du - dv, m_point + du + dv);
+    b.expand(m_point - du + dv);
+    b.expand(m_point + du - dv);
+    return b.padded();
+}
+
+template <class T>
+std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tMax) const {
+    using V = Vec3T<T>;
+    const V n(m_frame.n);
+    const V o(ray.o);
+    const V d(ray.d);
+    const V p0(m_point);
+
+    T t, cosine;
+    if (!intersectPlane(n, p0, o, d, t, cosine)) return std::nullopt;
+    if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
+    const double td = static_cast<double>(t);
+    if (!(tMin < td && td < tMax)) return std::nullopt;
+
+    // In-plane offset of the hit from the point: d·t - (p0 - o).
+    const V local = o + d * t - p0;
+    const T u = dot(local, V(m_frame.t));
+    const T v = dot(local, V(m_frame.b));
+    const T h = static_cast<T>(m_halfExtent);
+    if (!(std::abs(u) <= h && std::abs(v) <= h)) return std::nullopt;
+    return ShapeHit{td, static_cast<double>(u), static_cast<double>(v)};
+}
+
+std::optional<ShapeHit> Plane::intersect(const Ray& ray, double tMin, double tMax) const {
+    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
+                                           : intersectT<double>(ray, tMin, tMax);
+}
+
+SurfaceGeometry Plane::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+    SurfaceGeometry g;
+    const Vec3 p = ray.at(hit.t);
+    // Remove the off-plane error that o + t·d accumulates for grazing rays.
+    g.p = p - m_frame.n * dot(m_frame.n, p - m_point);
+    g.ng = g.ns = m_frame.n;
+    g.frontFace = dot(ray.d, m_frame.n) < 0;
+    return g;
+}
+
+std::unique_ptr<Shape> makePlane(const Vec3& point, const Vec3& normal, double halfExtent) {
+    requireFinite("plane", "point", point);
+    const Vec3 n = requireDirection("plane", "normal", normal);
+    requirePositive("plane", "halfExtent", halfExtent);
+    // The corners must stay finite (and within Embree's float range, ~1.8e19).
+    if (!(halfExtent <= 1e18)) {
+        throwInvalid("plane", "halfExtent must be <= 1e18 (got " + formatValue(halfExtent) + ")");
+    }
+    return std::make_unique<Plane>(point, n, halfExtent);
+}
+
+}  // namespace raylab

@@ -1,0 +1,344 @@
+#include "geometry/polygon.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "geometry/plane_hit.h"
+#include "geometry/quadratic.h"
+#include "geometry/validate.h"
+
+namespace raylab {
+
+namespace {
+
+/// Relative planarity tolerance (see Polygon::create).
+constexpr double kPlanarityTolerance = 1e-5;
+/// Below this |Newell| / diagonal² the vertices are treated as collinear.
+constexpr double kCollinearTolerance = 1e-12;
+
+/// Exact sign of ax·by - ay·bx. The rounded value decides when it clears its
+/// error bound; otherwise the difference of the two exact products (each a
+/// double-word from twoProduct) is expanded exactly (Shewchuk's Two_Two_Diff)
+/// and its most significant non-zero component gives the sign.
+template <class T>
+int crossSign(T ax, T ay, T bx, T by) {
+    const T l = ax * by;
+    const T r = ay * bx;
+    const T det = l - r;
+    const T bound = T(4) * std::numeric_limits<T>::epsilon() * (std::abs(l) + std::abs(r));
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+    T el, er;
+    twoProduct(ax, by, el);
+    twoProduct(ay, bx, er);
+    // (l + el) - (r + er) as the non-overlapping expansion x3 + x2 + x1 + x0.
+    T lo0, x0, x1, x2;
+    const T hi0 = twoSum(el, -er, x0);  // Two_One_Diff(l, el, er) -> (j, lo0, x0)
+    const T j = twoSum(l, hi0, lo0);
+    const T hi1 = twoSum(lo0, -r, x1);  // Two_One_Diff(j, lo0, r) -> (x3, x2, x1)
+    const T x3 = twoSum(j, hi1, x2);
+    for (T x : {x3, x2, x1, x0}) {
+        if (x > T(0)) return 1;
+        if (x < T(0)) return -1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+Vec3 newellNormal(const std::vector<Vec3>& vertices) {
+    const size_t n = vertices.size();
+    if (n == 0) return {};
+    Vec3 mean{};
+    for (const Vec3& v : vertices) mean += v;
+    mean = mean / static_cast<double>(n);
+    Vec3 sum{};
+    for (size_t i = 0; i < n; ++i) {
+        sum += cross(vertices[i] - mean, vertices[(i + 1) % n] - mean);
+    }
+    return sum;
+}
+
+Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Vec3& normal,
+                 const Vec3& centroid, double deviation, FillRule rule, PolygonTest test)
+    : m_vertices(std::move(vertices)),
+      m_normals(std::move(normals)),
+      m_frame(Frame::fromNormal(normal)),
+      m_centroid(centroid),
+      m_dropAxis(dominantAxis(normal)),
+      m_rule(rule),
+      m_test(test) {
+    for (const Vec3& v : m_vertices) {
+        m_bounds.expand(v);
+        for (int k = 0; k < 3; ++k) {
+            m_coords[k].push_back(v[k]);
+            m_coordsF[k].push_back(static_cast<float>(v[k]));
+        }
+    }
+    // Hits lie on the centroid plane, up to `deviation` away from the vertices.
+    m_bounds.lo -= Vec3{deviation, deviation, deviation};
+    m_bounds.hi += Vec3{deviation, deviation, deviation};
+    m_bounds = m_bounds.padded();
+}
+
+std::unique_ptr<Polygon> Polygon::create(const PolygonParams& params) {
+    const auto& in = params.vertices;
+    if (in.size() < 3) {
+        throwInvalid("polygon",
+                     "needs at least 3 vertices (got " + std::to_string(in.size()) + ")");
+    }
+    const bool hasNormals = !params.normals.empty();
+    if (hasNormals && params.normals.size() != in.size()) {
+        throwInvalid("polygon", std::to_string(params.normals.size()) + " vertex normals for " +
+                                    std::to_string(in.size()) + " vertices");
+    }
+    for (size_t i = 0; i < in.size(); ++i) {
+        if (!isFinite(in[i])) {
+            throwInvalid("polygon", "vertex " + std::to_string(i) + " must be finite (got " +
+                                        formatValue(in[i]) + ")");
+        }
+    }
+    // Drop consecutive duplicates (a closing vertex repeating the first included).
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> normals;
+    for (size_t i = 0; i < in.size(); ++i) {
+        if (!vertices.empty() && in[i] == vertices.back()) continue;
+        vertices.push_back(in[i]);
+        if (hasNormals) {
+            const std::string what = "normal of vertex " + std::to_string(i);
+            normals.push_back(requireDirection("polygon", what.c_str(), params.normals[i]));
+        }
+    }
+    while (vertices.size() > 1 && vertices.back() == vertices.front()) {
+        vertices.pop_back();
+        if (hasNormals) normals.pop_back();
+    }
+    if (vertices.size() < 3) {
+        throwInvalid("polygon", "fewer than 3 distinct vertices (got " +
+                                    std::to_string(vertices.size()) + ")");
+    }
+
+    Bounds3 box;
+    double largest = 0;
+    Vec3 centroid{};
+    for (const Vec3& v : vertices) {
+        box.expand(v);
+        largest = std::max(largest, maxComponent(abs(v)));
+        centroid += v;
+    }
+    centroid = centroid / static_cast<double>(vertices.size());
+    const double diagonal = length(box.extent());
+
+    Vec3 n = newellNormal(vertices);
+    if (!(length(n) > kCollinearTolerance * diagonal * diagonal)) {
+        // The signed areas may cancel (a bow-tie): fall back to the largest fan-free
+        // triangle normal around the centroid; if that vanishes too, it is a line.
+        Vec3 best{};
+        for (size_t i = 0; i < vertices.size(); ++i) {
+            const Vec3& next = vertices[(i + 1) % vertices.size()];
+            const Vec3 c = cross(vertices[i] - centroid, next - centroid);
+            if (lengthSquared(c) > lengthSquared(best)) best = c;
+        }
+        if (!(length(best) > kCollinearTolerance * diagonal * diagonal)) {
+            throwInvalid("polygon", "vertices are collinear (zero area)");
+        }
+        n = best;
+    }
+    n = normalize(n);
+
+    double deviation = 0;
+    size_t worst = 0;
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        const double dist = std::abs(dot(n, vertices[i] - centroid));
+        if (dist > deviation) {
+            deviation = dist;
+            worst = i;
+        }
+    }
+    const double tolerance = kPlanarityTolerance * (diagonal + largest);
+    if (!(deviation <= tolerance)) {
+        throwInvalid("polygon", "vertices are not coplanar (vertex " + std::to_string(worst) +
+                                    " is " + formatValue(deviation) +
+                                    " from the plane; tolerance " + formatValue(tolerance) + ")");
+    }
+    return std::make_unique<Polygon>(std::move(vertices), std::move(normals), n, centroid,
+                                     deviation, params.rule, params.test);
+}
+
+Bounds3 Polygon::bounds() const { return m_bounds; }
+
+bool Polygon::accepts(int winding, int crossings) const {
+    return m_rule == FillRule::EvenOdd ? (crossings & 1) != 0 : winding != 0;
+}
+
+template <>
+const double* Polygon::coords<double>(int axis) const {
+    return m_coords[axis].data();
+}
+
+template <>
+const float* Polygon::coords<float>(int axis) const {
+    return m_coordsF[axis].data();
+}
+
+template <class T>
+bool Polygon::insideProjected(const Vec3T<T>& p) const {
+    // Drop the dominant axis of the normal; (X, Y) span the projection.
+    const T* X = coords<T>((m_dropAxis + 1) % 3);
+    const T* Y = coords<T>((m_dropAxis + 2) % 3);
+    const T px = p[(m_dropAxis + 1) % 3];
+    const T py = p[(m_dropAxis + 2) % 3];
+    int winding = 0, crossings = 0;
+    const size_t n = m_vertices.size();
+    T ax = X[n - 1], ay = Y[n - 1];
+    for (size_t i = 0; i < n; ++i) {
+        const T bx = X[i], by = Y[i];
+        // Sunday's isLeft: > 0 when p is left of the directed edge a -> b.
+        if (ay <= py) {
+            if (by > py && (bx - ax) * (py - ay) - (px - ax) * (by - ay) > T(0)) {
+                ++winding;  // upward: includes start, excludes end
+                ++crossings;
+            }
+        } else if (by <= py && (bx - ax) * (py - ay) - (px - ax) * (by - ay) < T(0)) {
+            --winding;  // downward: excludes start, includes end
+            ++crossings;
+        }
+        ax = bx;
+        ay = by;
+    }
+    return accepts(winding, crossings);
+}
+
+template <class T>
+bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
+    // Ray space: z = dominant |d| axis, shear so the ray is the +z axis through the origin.
+    const int kz = dominantAxis(d);
+    const int kx = (kz + 1) % 3;
+    const int ky = (kx + 1) % 3;
+    const T sx = d[kx] / d[kz];
+    const T sy = d[ky] / d[kz];
+    const T ox = o[kx], oy = o[ky], oz = o[kz];
+    const T* X = coords<T>(kx);
+    const T* Y = coords<T>(ky);
+    const T* Z = coords<T>(kz);
+    // A vertex's 2D coordinates depend only on the vertex and the ray: bit-identical
+    // in every polygon sharing it.
+    const auto shear = [&](size_t i, T& x, T& y) {
+        const T wz = Z[i] - oz;
+        x = (X[i] - ox) - sx * wz;
+        y = (Y[i] - oy) - sy * wz;
+    };
+    int winding = 0, crossings = 0;
+    const size_t n = m_vertices.size();
+    T ax, ay;
+    shear(n - 1, ax, ay);
+    for (size_t i = 0; i < n; ++i) {
+        T bx, by;
+        shear(i, bx, by);
+        // Origin perturbed to (+εx, +εy): a vertex at y == 0 counts as below.
+        const bool aAbove = ay > T(0);
+        const bool bAbove = by > T(0);
+        if (aAbove != bAbove) {
+            // Evaluate lower endpoint -> upper endpoint, whichever way the polygon runs.
+            const T lx = bAbove ? ax : bx, ly = bAbove ? ay : by;
+            const T ux = bAbove ? bx : ax, uy = bAbove ? by : ay;
+            int s = crossSign(lx, ly, ux, uy);  // > 0: origin left of the upward edge
+            if (s == 0) {
+                // Origin exactly on the edge's line: the perturbation decides,
+                // orient = (ux - lx)·εy - (uy - ly)·εx with uy > ly.
+                s = ux > lx ? 1 : -1;
+            }
+            if (s > 0) {  // the edge crosses the +x axis
+                winding += bAbove ? 1 : -1;
+                ++crossings;
+            }
+        }
+        ax = bx;
+        ay = by;
+    }
+    return accepts(winding, crossings);
+}
+
+template <class T>
+std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double tMax) const {
+    using V = Vec3T<T>;
+    const V o(ray.o);
+    const V d(ray.d);
+    T t, cosine;
+    if (!intersectPlane(V(m_frame.n), V(m_centroid), o, d, t, cosine)) return std::nullopt;
+    if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
+    const double td = static_cast<double>(t);
+    if (!(tMin < td && td < tMax)) return std::nullopt;
+    const bool inside =
+        m_test == PolygonTest::Watertight ? insideWatertight(o, d) : insideProjected(o + d * t);
+    if (!inside) return std::nullopt;
+    const Vec3 local = ray.at(td) - m_centroid;
+    return ShapeHit{td, dot(local, m_frame.t), dot(local, m_frame.b)};
+}
+
+std::optional<ShapeHit> Polygon::intersect(const Ray& ray, double tMin, double tMax) const {
+    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
+                                           : intersectT<double>(ray, tMin, tMax);
+}
+
+Vec3 Polygon::interpolatedNormal(const Vec3& p) const {
+    // Mean-value coordinates (Floater 2003; signed angles per Hormann & Floater
+    // 2006, valid for concave polygons): w_i = (tan(α_{i-1}/2) + tan(α_i/2)) / r_i
+    // with α_i the signed angle at p between vertices i and i+1, and
+    // tan(α/2) = (r_i r_{i+1} - s_i·s_{i+1}) / (n·(s_i × s_{i+1})), s_i = v_i - p.
+    // Rolling over the edges keeps it allocation-free (it runs once per shading point).
+    const size_t n = m_vertices.size();
+    const double tiny = 1e-12 * length(m_bounds.extent());
+    Vec3 sPrev = m_vertices[n - 1] - p;
+    double rPrev = length(sPrev);
+    double tanPrev = 0;
+    Vec3 sum{};
+    // Pass 0 computes tan(α_{n-1}/2) for the closing edge; passes 1..n accumulate.
+    for (size_t pass = 0; pass <= n; ++pass) {
+        const size_t i = pass % n;
+        const Vec3 s = m_vertices[i] - p;
+        const double r = length(s);
+        if (!(r > tiny)) return m_normals[i];  // at a vertex
+        const Vec3 c = cross(sPrev, s);
+        const double d = dot(sPrev, s);
+        if (length(c) <= 1e-12 * rPrev * r && d < 0) {
+            // On the edge (i-1, i): linear interpolation along it.
+            const size_t prev = (i + n - 1) % n;
+            return (m_normals[prev] * r + m_normals[i] * rPrev) / (rPrev + r);
+        }
+        const double area = dot(m_frame.n, c);
+        // area == 0 here means collinear on the same side: angle 0.
+        const double tanCur = area != 0 ? (rPrev * r - d) / area : 0.0;
+        if (pass > 0) {
+            // tanPrev belongs to edge (i-2, i-1) and tanCur to edge (i-1, i): weight of i-1.
+            const size_t prev = (i + n - 1) % n;
+            sum += m_normals[prev] * ((tanPrev + tanCur) / rPrev);
+        }
+        tanPrev = tanCur;
+        sPrev = s;
+        rPrev = r;
+    }
+    return sum;
+}
+
+SurfaceGeometry Polygon::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+    SurfaceGeometry g;
+    const Vec3 p = ray.at(hit.t);
+    g.p = p - m_frame.n * dot(m_frame.n, p - m_centroid);
+    g.ng = m_frame.n;
+    g.ns = g.ng;
+    if (!m_normals.empty()) {
+        Vec3 ns = normalize(interpolatedNormal(g.p));
+        if (isFinite(ns) && ns != Vec3{}) {
+            if (dot(ns, g.ng) < 0) ns = -ns;
+            g.ns = ns;
+        }
+    }
+    g.frontFace = dot(ray.d, g.ng) < 0;
+    return g;
+}
+
+std::unique_ptr<Shape> makePolygon(const PolygonParams& params) { return Polygon::create(params); }
+
+}  // namespace raylab

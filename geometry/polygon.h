@@ -1,0 +1,109 @@
+#pragma once
+// Planar polygons with any number of vertices, convex or concave (also
+// self-intersecting, under the even-odd or nonzero fill rule).
+//
+// makePolygon() validates the input (see its rules below), computes the
+// Newell normal (robust to collinear leading vertices) and stores the
+// vertices. intersect() first meets the polygon's plane (through the
+// centroid, Newell normal), then decides inside/outside with one of two tests:
+//
+// - PolygonTest::Projected, the lecture's test: the plane hit point and the
+//   vertices are projected by dropping the dominant axis of the normal, then
+//   Sunday's crossing/winding count with the half-open rule (an upward edge
+//   includes its start and excludes its end). Not watertight: neighbours
+//   compute their hit points and edge tests from different planes and edge
+//   directions, so rays through shared edges or vertices can miss both.
+// - PolygonTest::Watertight, in ray space (Woop, Benthin & Wald 2013): the
+//   vertices are translated to the ray origin, permuted so that the dominant
+//   |d| axis is z and sheared so that the ray runs along +z; the crossing/
+//   winding count is then taken around the 2D origin. A vertex's sheared
+//   coordinates depend only on the vertex and the ray, every edge is evaluated
+//   lower-endpoint first, the sign of each edge function is exact (recomputed
+//   with error-free products when the rounded value is too small to trust)
+//   and exact zeros are broken by a symbolic perturbation of the origin to
+//   (+εx, +εy), εx << εy, the same for every polygon. The result equals the
+//   test for a point in general position, so polygons that share edges and
+//   vertices bit-exactly and tile a region are hit by exactly one of them,
+//   never zero or two (measured in tests/geometry/test_polygon.cpp).
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "geometry/frame.h"
+#include "geometry/primitives.h"
+#include "geometry/shape.h"
+
+namespace raylab {
+
+/// Newell's normal of a closed polygon: twice the vector area, pointing to
+/// the side from which the vertices run counter-clockwise. Computed relative
+/// to the vertex mean, so it is accurate for polygons far from the origin.
+Vec3 newellNormal(const std::vector<Vec3>& vertices);
+
+class Polygon final : public Shape {
+public:
+    /// Validation rules (each violation throws std::invalid_argument naming it):
+    /// - at least 3 vertices, all finite; consecutive duplicates (including
+    ///   last == first) are dropped, and at least 3 distinct vertices must remain;
+    /// - the vertices must not be collinear: the Newell area must exceed 1e-12
+    ///   of the squared bounding-box diagonal;
+    /// - the vertices must be coplanar: every vertex within
+    ///   1e-5 · (bounding-box diagonal + largest |coordinate|) of the plane
+    ///   through the vertex mean with the Newell normal; the message names the
+    ///   worst vertex and its distance. (The second term absorbs 6-digit decimal
+    ///   rounding of polygons far from the origin, as written by SPD.)
+    /// - normals: empty, or one finite non-zero vector per input vertex.
+    static std::unique_ptr<Polygon> create(const PolygonParams& params);
+
+    /// Box of the vertices (grown by their planarity deviation), padded.
+    Bounds3 bounds() const override;
+    /// Plane hit (sidedness by the Newell normal, tMin < t < tMax), then the
+    /// inside test chosen in PolygonParams. u, v = in-plane coordinates of the
+    /// hit relative to the vertex mean, along the frame tangents.
+    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// Hit point (projected onto the plane), outward normal; the shading normal
+    /// interpolates per-vertex normals with mean-value coordinates when given
+    /// (flipped into the geometric normal's hemisphere if it points away).
+    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    const char* kind() const override { return "polygon"; }
+
+    const std::vector<Vec3>& vertices() const { return m_vertices; }
+    const Vec3& normal() const { return m_frame.n; }
+    FillRule fillRule() const { return m_rule; }
+    PolygonTest insideTest() const { return m_test; }
+    /// Switches the inside test (accuracy study and benchmarks).
+    void setInsideTest(PolygonTest test) { m_test = test; }
+
+    /// Use create(); public for std::make_unique.
+    Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Vec3& normal,
+            const Vec3& centroid, double deviation, FillRule rule, PolygonTest test);
+
+private:
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
+    template <class T>
+    bool insideProjected(const Vec3T<T>& p) const;
+    template <class T>
+    bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const;
+    bool accepts(int winding, int crossings) const;
+    Vec3 interpolatedNormal(const Vec3& p) const;
+
+    /// Coordinate axis `axis` of every vertex, in the precision T (structure of
+    /// arrays: the inside tests pick axes at run time without branching per vertex).
+    template <class T>
+    const T* coords(int axis) const;
+
+    std::vector<Vec3> m_vertices;
+    std::array<std::vector<double>, 3> m_coords;  ///< x, y, z of the vertices
+    std::array<std::vector<float>, 3> m_coordsF;  ///< the same, rounded to float
+    std::vector<Vec3> m_normals;                  ///< unit per-vertex shading normals, or empty
+    Frame m_frame;                                ///< n = unit Newell normal
+    Vec3 m_centroid;                              ///< vertex mean: the plane's reference point
+    Bounds3 m_bounds;
+    int m_dropAxis;  ///< dominant axis of the normal (Projected test)
+    FillRule m_rule;
+    PolygonTest m_test;
+};
+
+}  // namespace raylab

@@ -1,0 +1,16 @@
+#include <stdexcept>
+
+#include "renderer/accel/accelerator.h"
+#include "renderer/accel/embree_factory.h"
+#include "renderer/accel/naive_accelerator.h"
+
+namespace raylab {
+
+std::unique_ptr<Accelerator> makeAccelerator(const std::string& name, const Scene& scene,
+                                             const AccelOptions& options) {
+    if (name == "embree") return makeEmbreeAccelerator(scene, options);
+    if (name == "naive") return std::make_unique<NaiveAccelerator>(scene);
+    throw std::invalid_argument("unknown accelerator '" + name + "' (expected embree or naive)");
+}
+
+}  // namespace raylab

@@ -1,0 +1,92 @@
+#include "renderer/accel/naive_accelerator.h"
+
+#include "geometry/triangle.h"
+
+namespace raylab {
+
+namespace {
+
+/// Both back ends treat a ray they cannot trace (non-finite, zero direction,
+/// empty or NaN interval) as a miss, so they agree on it too.
+bool traceable(const Ray& ray, double tMin, double tMax) {
+    return isFinite(ray.o) && isFinite(ray.d) && ray.d != Vec3{0, 0, 0} && tMin < tMax;
+}
+
+}  // namespace
+
+Surface Surface::analytic(const Shape& shape, uint32_t object) {
+    Surface s;
+    s.m_shape = &shape;
+    s.m_object = object;
+    return s;
+}
+
+Surface Surface::triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim) {
+    Surface s;
+    const auto& idx = mesh.triangles[prim];
+    s.m_vertices = {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
+    s.m_object = object;
+    s.m_prim = prim;
+    return s;
+}
+
+std::optional<Hit> Surface::hit(const Ray& ray, double tMin, double tMax) const {
+    if (m_shape) {
+        const auto h = m_shape->intersect(ray, tMin, tMax);
+        if (!h) return std::nullopt;
+        return Hit{h->t, m_object, m_prim, h->u, h->v};
+    }
+    const auto h = intersectTriangle(ray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax);
+    if (!h) return std::nullopt;
+    return Hit{h->t, m_object, m_prim, h->u, h->v};
+}
+
+bool Surface::occluded(const Ray& ray, double tMin, double tMax) const {
+    if (m_shape) return m_shape->occluded(ray, tMin, tMax);
+    return intersectTriangle(ray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
+        .has_value();
+}
+
+Bounds3 Surface::bounds() const {
+    if (m_shape) return m_shape->bounds();
+    Bounds3 b(m_vertices[0], m_vertices[1]);
+    b.expand(m_vertices[2]);
+    return b;
+}
+
+NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
+    m_surfaces.reserve(scene.primitiveCount());
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        const auto object = static_cast<uint32_t>(i);
+        if (o.isMesh()) {
+            for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
+                m_surfaces.push_back(Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t)));
+        } else if (o.shape) {
+            m_surfaces.push_back(Surface::analytic(*o.shape, object));
+        }
+    }
+}
+
+std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
+    if (!traceable(ray, tMin, tMax)) return std::nullopt;
+    std::optional<Hit> best;
+    // Each hit shrinks the interval, so later surfaces only count if closer;
+    // on an exact tie the earlier surface in scene order wins.
+    for (const Surface& s : m_surfaces) {
+        if (auto h = s.hit(ray, tMin, tMax)) {
+            tMax = h->t;
+            best = h;
+        }
+    }
+    return best;
+}
+
+bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {
+    if (!traceable(ray, tMin, tMax)) return false;
+    for (const Surface& s : m_surfaces)
+        if (s.occluded(ray, tMin, tMax)) return true;
+    return false;
+}
+
+}  // namespace raylab

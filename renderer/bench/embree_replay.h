@@ -1,0 +1,48 @@
+#pragma once
+// Bare replay of recorded rays through Embree: rtcIntersect1 / rtcOccluded1
+// on an EmbreeAccelerator's RTCScene, with no shading, no Hit decoding and no
+// virtual dispatch. The rays are converted once, up front, exactly as
+// EmbreeAccelerator converts them (float, relative to its origin, mask all
+// ones), and every query passes the same extended context (the exact double
+// ray for the analytic shapes), so the work inside Embree is the renderer's.
+// Embree types stay in the .cpp: this header is safe to include anywhere.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "renderer/accel/accelerator.h"
+#include "renderer/accel/ray_recorder.h"
+
+namespace raylab {
+
+class EmbreeReplay {
+public:
+    /// \brief Prepares `rays` (which must outlive this object) for replay on
+    ///   `accel`, which must be an EmbreeAccelerator.
+    /// \throws std::invalid_argument when `accel` is not the Embree back end.
+    EmbreeReplay(const Accelerator& accel, const std::vector<RecordedRay>& rays);
+    ~EmbreeReplay();
+    EmbreeReplay(const EmbreeReplay&) = delete;
+    EmbreeReplay& operator=(const EmbreeReplay&) = delete;
+
+    /// Rays handed to Embree; the others (non-finite, empty interval) are
+    /// misses that EmbreeAccelerator never traces either.
+    size_t tracedCount() const;
+
+    /// \brief Traces every prepared ray once, in recorded order.
+    /// \param threads 1 = a plain loop on the calling thread; n > 1 = a TBB
+    ///   loop limited to n threads; 0 = a TBB loop on all cores.
+    /// \return wall-clock seconds of the loop (preparation excluded).
+    double run(int threads);
+
+    /// Per recorded ray, from the last run: 1 = hit (intersect) or occluded
+    /// (occlusion query), 0 = miss or not traced.
+    const std::vector<uint8_t>& results() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace raylab

@@ -1,0 +1,291 @@
+#include "renderer/bench/limit_bench.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "renderer/accel/accelerator.h"
+#include "renderer/accel/ray_recorder.h"
+#include "renderer/bench/bench_util.h"
+#include "renderer/bench/embree_replay.h"
+#include "renderer/effects.h"
+#include "renderer/io/atomic_file.h"
+#include "renderer/io/errors.h"
+#include "renderer/io/scene_loader.h"
+#include "renderer/render.h"
+#include "renderer/render_setup.h"
+
+namespace raylab {
+
+const char* const kBenchLimitHelp =
+    "usage: raylab bench limit SCENE [options]\n"
+    "\n"
+    "How close the renderer comes to Embree's own speed on SCENE. Records every ray one render\n"
+    "traces (camera, shadow, reflection, refraction), replays exactly those rays through bare\n"
+    "rtcIntersect1/rtcOccluded1 on the same Embree scene (same float conversion, mask and\n"
+    "context; no shading), and reports the renderer's rays/s (separate, un-recorded renders) as a\n"
+    "fraction of the replay's. A replay through the Accelerator interface splits the gap into\n"
+    "query overhead and shading. Performance bar: renderer >= 70% of bare Embree. Times are\n"
+    "medians of --runs runs.\n"
+    "\n"
+    "options:\n"
+    "  --width W, --height H   image size (default: the scene's; 512x512 with --spd)\n"
+    "  --spd                   Haines' SPD procedure: 513x513 corner rays, depth 5\n"
+    "  --runs N                timed runs of each measurement, median reported (default 5)\n"
+    "  --threads N             threads of the render and of the replays (default 1; 0 = all cores)\n"
+    "  -o, --output FILE       also write the results as CSV (.csv) or JSON (.json)\n";
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Replays the rays through the Accelerator interface (what the integrator
+/// calls: conversion, query, decoding), with the same threading as EmbreeReplay.
+double replayThroughInterface(const Accelerator& accel, const std::vector<RecordedRay>& rays,
+                              int threads, uint64_t& disagreements) {
+    std::vector<uint8_t> results(rays.size(), 0);
+    const auto one = [&](size_t i) {
+        const RecordedRay& r = rays[i];
+        results[i] = r.occlusion ? accel.occluded(r.ray, r.tMin, r.tMax)
+                                 : accel.intersect(r.ray, r.tMin, r.tMax).has_value();
+    };
+    const auto t0 = Clock::now();
+    if (threads == 1) {
+        for (size_t i = 0; i < rays.size(); ++i) one(i);
+    } else {
+        std::unique_ptr<tbb::global_control> limit;
+        if (threads > 1)
+            limit = std::make_unique<tbb::global_control>(
+                tbb::global_control::max_allowed_parallelism, size_t(threads));
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024),
+                          [&](const tbb::blocked_range<size_t>& range) {
+                              for (size_t i = range.begin(); i != range.end(); ++i) one(i);
+                          });
+    }
+    const double seconds = secondsSince(t0);
+    disagreements = 0;
+    for (size_t i = 0; i < rays.size(); ++i) disagreements += results[i] != uint8_t(rays[i].hit);
+    return seconds;
+}
+
+bool sameCounters(const RayCounters& a, const RayCounters& b) {
+    return a.byDepth == b.byDepth && a.cameraHits == b.cameraHits;
+}
+
+std::string fixed(double v, int decimals) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+struct LimitResult {
+    std::string scene;
+    int width = 0, height = 0, threads = 1, runs = 1;
+    bool spd = false;
+    uint64_t primitives = 0;
+    double buildSeconds = 0;
+    RayCounters counters;
+    uint64_t rays = 0;
+    double renderSeconds = 0, interfaceSeconds = 0, bareSeconds = 0;
+    uint64_t bareDisagreements = 0, interfaceDisagreements = 0;
+    bool countersMatch = false;
+
+    double rate(double seconds) const { return seconds > 0 ? double(rays) / seconds : 0; }
+    double fraction() const { return bareSeconds > 0 ? bareSeconds / renderSeconds : 0; }
+};
+
+std::string csvDocument(const LimitResult& r, const std::string& cpu) {
+    std::string t =
+        "scene,width,height,spd,threads,runs,primitives,build_s,rays,camera_rays,shadow_rays,"
+        "reflection_rays,refraction_rays,render_s,render_mrays_per_s,interface_replay_s,"
+        "interface_mrays_per_s,bare_replay_s,bare_mrays_per_s,renderer_fraction_of_bare,"
+        "bar_met,cpu,cores\n";
+    t += csvField(r.scene) + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," +
+         (r.spd ? "true" : "false") + "," + std::to_string(r.threads) + "," +
+         std::to_string(r.runs) + "," + std::to_string(r.primitives) + "," +
+         jsonNumber(r.buildSeconds) + "," + std::to_string(r.rays) + "," +
+         std::to_string(r.counters.total(RayType::Camera)) + "," +
+         std::to_string(r.counters.total(RayType::Shadow)) + "," +
+         std::to_string(r.counters.total(RayType::Reflection)) + "," +
+         std::to_string(r.counters.total(RayType::Refraction)) + "," +
+         jsonNumber(r.renderSeconds) + "," + jsonNumber(r.rate(r.renderSeconds) * 1e-6) + "," +
+         jsonNumber(r.interfaceSeconds) + "," + jsonNumber(r.rate(r.interfaceSeconds) * 1e-6) +
+         "," + jsonNumber(r.bareSeconds) + "," + jsonNumber(r.rate(r.bareSeconds) * 1e-6) + "," +
+         jsonNumber(r.fraction()) + "," + (r.fraction() >= kLimitBenchBar ? "true" : "false") +
+         "," + csvField(cpu) + "," + std::to_string(logicalCores()) + "\n";
+    return t;
+}
+
+std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
+    const auto phase = [&](double s) {
+        return "{\"seconds\": " + jsonNumber(s) +
+               ", \"mrays_per_second\": " + jsonNumber(r.rate(s) * 1e-6) + "}";
+    };
+    std::string j = "{\n  \"scene\": " + jsonString(r.scene) +
+                    ",\n  \"machine\": {\"cpu\": " + jsonString(cpu) +
+                    ", \"cores\": " + std::to_string(logicalCores()) + "}" +
+                    ",\n  \"width\": " + std::to_string(r.width) +
+                    ",\n  \"height\": " + std::to_string(r.height) +
+                    ",\n  \"spd\": " + (r.spd ? "true" : "false") +
+                    ",\n  \"threads\": " + std::to_string(r.threads) +
+                    ",\n  \"runs\": " + std::to_string(r.runs) +
+                    ",\n  \"primitives\": " + std::to_string(r.primitives) +
+                    ",\n  \"build_seconds\": " + jsonNumber(r.buildSeconds) +
+                    ",\n  \"rays\": {\"total\": " + std::to_string(r.rays) +
+                    ", \"camera\": " + std::to_string(r.counters.total(RayType::Camera)) +
+                    ", \"camera_hits\": " + std::to_string(r.counters.cameraHits) +
+                    ", \"shadow\": " + std::to_string(r.counters.total(RayType::Shadow)) +
+                    ", \"reflection\": " + std::to_string(r.counters.total(RayType::Reflection)) +
+                    ", \"refraction\": " + std::to_string(r.counters.total(RayType::Refraction)) +
+                    "},\n  \"renderer\": " + phase(r.renderSeconds) +
+                    ",\n  \"interface_replay\": " + phase(r.interfaceSeconds) +
+                    ",\n  \"bare_replay\": " + phase(r.bareSeconds) +
+                    ",\n  \"renderer_fraction_of_bare\": " + jsonNumber(r.fraction()) +
+                    ",\n  \"bar\": " + jsonNumber(kLimitBenchBar) +
+                    ",\n  \"bar_met\": " + (r.fraction() >= kLimitBenchBar ? "true" : "false") +
+                    ",\n  \"recording_matches_counters\": " +
+                    (r.countersMatch ? "true" : "false") +
+                    ",\n  \"replay_disagreements\": " + std::to_string(r.bareDisagreements) +
+                    "\n}\n";
+    return j;
+}
+
+}  // namespace
+
+int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
+    if (options.scene.empty()) throw UsageError("bench limit: missing SCENE");
+    if (options.width < 0 || options.height < 0)
+        throw UsageError("bench limit: width and height must be >= 1");
+    if (options.runs < 1) throw UsageError("bench limit: runs must be >= 1");
+    if (options.threads < 0) throw UsageError("bench limit: threads must be >= 0");
+    std::optional<TableFormat> format;
+    if (!options.outPath.empty()) format = tableFormatOf(options.outPath, "bench limit: output");
+
+    Scene scene = loadScene(options.scene);
+    RenderOverrides o;
+    o.spd = options.spd;
+    if (options.width > 0) o.width = options.width;
+    if (options.height > 0) o.height = options.height;
+    if (options.threads > 0) o.threads = options.threads;
+    const RenderOptions renderOptions = resolveRenderOptions(scene, o);
+    checkMemoryBudget(scene, renderOptions);
+    applyPrecision(scene, renderOptions.precision);
+    const EffectSet effects = analyseEffects(scene, renderOptions);
+
+    LimitResult r;
+    r.scene = options.scene;
+    r.width = renderOptions.width;
+    r.height = renderOptions.height;
+    r.spd = options.spd;
+    r.threads = effectiveThreads(options.threads);
+    r.runs = options.runs;
+    r.primitives = scene.primitiveCount();
+    const std::string cpu = cpuModelName();
+
+    // Device creation included: the BVH alone is in `bench accel`.
+    const auto t0 = Clock::now();
+    const std::unique_ptr<Accelerator> accel =
+        makeAccelerator("embree", scene, renderOptions.accelOptions);
+    r.buildSeconds = secondsSince(t0);
+
+    out << "raylab bench limit: " << options.scene << "\n"
+        << "  " << r.width << "x" << r.height
+        << (options.spd ? " SPD procedure (rays through pixel corners)" : "") << ", spp "
+        << renderOptions.spp << ", depth " << renderOptions.maxDepth << ", " << r.primitives
+        << " primitives, Embree device + build " << fixed(r.buildSeconds * 1e3, 1) << " ms\n"
+        << "  machine: " << cpu << ", " << logicalCores() << " logical cores; threads: "
+        << r.threads << "; median of " << r.runs << " runs\n"
+        << std::flush;
+
+    // 1. One recorded render: the exact rays of a frame, in deterministic order.
+    RayRecorder recorder(*accel, scene, renderOptions);
+    const RenderResult recorded = render(scene, recorder, renderOptions, effects);
+    const std::vector<RecordedRay> rays = recorder.takeRays();
+    r.rays = rays.size();
+    EmbreeReplay replay(*accel, rays);
+    const int replayThreads = options.threads;
+
+    // 2. Warm-up of every phase, then the timed runs interleaved (render, bare
+    //    replay, interface replay, render, ...), so that a machine whose speed
+    //    drifts (shared cores, turbo) affects the three medians alike.
+    //    The renders are the renderer as users run it: no recording.
+    const RenderResult warm = render(scene, *accel, renderOptions, effects);
+    r.counters = warm.rays;
+    replay.run(replayThreads);
+    uint64_t disagreements = 0;
+    replayThroughInterface(*accel, rays, replayThreads, disagreements);
+    std::vector<double> renderTimes, bareTimes, interfaceTimes;
+    for (int i = 0; i < options.runs; ++i) {
+        renderTimes.push_back(render(scene, *accel, renderOptions, effects).renderSeconds);
+        bareTimes.push_back(replay.run(replayThreads));
+        interfaceTimes.push_back(
+            replayThroughInterface(*accel, rays, replayThreads, disagreements));
+    }
+    r.renderSeconds = median(renderTimes);
+    r.bareSeconds = median(bareTimes);
+    r.interfaceSeconds = median(interfaceTimes);
+    r.interfaceDisagreements = disagreements;
+    for (size_t i = 0; i < rays.size(); ++i)
+        r.bareDisagreements += replay.results()[i] != uint8_t(rays[i].hit);
+    r.countersMatch = sameCounters(RayRecorder::countRays(rays), recorded.rays) &&
+                      sameCounters(recorded.rays, r.counters) && recorder.unmatchedRays() == 0;
+
+    const RayCounters& c = r.counters;
+    out << "  rays per frame: " << r.rays << " (camera " << c.total(RayType::Camera) << ", hits "
+        << c.cameraHits << "; shadow " << c.total(RayType::Shadow) << "; reflection "
+        << c.total(RayType::Reflection) << "; refraction " << c.total(RayType::Refraction)
+        << ")\n";
+    out << "  recording: " << (r.countersMatch ? "matches" : "DOES NOT MATCH")
+        << " the render's ray counters by type and depth; replay disagrees with the recorded "
+           "hit/miss on "
+        << r.bareDisagreements << " rays (interface replay: " << r.interfaceDisagreements
+        << ")\n\n";
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-44s %10s %10s %10s\n", "", "seconds", "Mrays/s",
+                  "of bare");
+    out << line;
+    const auto row = [&](const char* name, double seconds) {
+        std::snprintf(line, sizeof line, "  %-44s %10.4f %10.3f %9.1f%%\n", name, seconds,
+                      r.rate(seconds) * 1e-6,
+                      seconds > 0 ? 100.0 * r.bareSeconds / seconds : 0.0);
+        out << line;
+    };
+    row("bare Embree replay (rtcIntersect1/rtcOccluded1)", r.bareSeconds);
+    row("replay through Accelerator::intersect/occluded", r.interfaceSeconds);
+    row("renderer (full render, shading included)", r.renderSeconds);
+    out << "\n  renderer reaches " << fixed(100.0 * r.fraction(), 1)
+        << "% of bare Embree (bar: >= " << fixed(100.0 * kLimitBenchBar, 0) << "%): "
+        << (r.fraction() >= kLimitBenchBar ? "met" : "NOT met") << "\n";
+    // Where the time goes: the two gaps as shares of the renderer's frame time.
+    if (r.renderSeconds > 0) {
+        const double traversal = r.bareSeconds / r.renderSeconds;
+        const double query = std::max(0.0, r.interfaceSeconds - r.bareSeconds) / r.renderSeconds;
+        const double rest = std::max(0.0, r.renderSeconds - r.interfaceSeconds) / r.renderSeconds;
+        out << "  frame time split: Embree traversal " << fixed(100 * traversal, 1)
+            << "%, query conversion/decoding " << fixed(100 * query, 1)
+            << "%, shading, ray generation and bookkeeping " << fixed(100 * rest, 1) << "%\n";
+    }
+
+    if (format) {
+        writeFileAtomically(options.outPath, *format == TableFormat::Csv
+                                                 ? csvDocument(r, cpu)
+                                                 : jsonDocument(r, cpu));
+        out << "  results: " << options.outPath << "\n";
+    }
+    return 0;
+}
+
+}  // namespace raylab

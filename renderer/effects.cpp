@@ -1,0 +1,50 @@
+#include "renderer/effects.h"
+
+#include "renderer/render_options.h"
+#include "renderer/scene.h"
+
+namespace raylab {
+
+std::vector<std::string> EffectSet::names() const {
+    std::vector<std::string> n;
+    if (has(kShadows)) n.push_back("shadows");
+    if (has(kHighlights)) n.push_back("highlights");
+    if (has(kReflection)) n.push_back("reflection");
+    if (has(kRefraction)) n.push_back("refraction");
+    if (smoothNormals) n.push_back("smooth_normals");
+    if (antialiasing) n.push_back("antialiasing");
+    if (aovs) n.push_back("aovs");
+    return n;
+}
+
+EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
+    EffectSet e;
+    if (options.forceAllEffects) {
+        e.kernel = kAllKernelEffects;
+    } else {
+        // Only materials that some object uses count.
+        std::vector<bool> used(scene.materials.size(), false);
+        for (const Object& o : scene.objects) {
+            if (o.material < used.size()) used[o.material] = true;
+            for (uint32_t m : o.faceMaterials)
+                if (m < used.size()) used[m] = true;
+        }
+        const bool secondary = options.maxDepth > 1;
+        for (size_t i = 0; i < scene.materials.size(); ++i) {
+            if (!used[i]) continue;
+            const Material& m = scene.materials[i];
+            if (!scene.lights.empty() && m.hasLocalShading()) e.kernel |= kShadows;
+            if (!scene.lights.empty() && !m.ks.isBlack()) e.kernel |= kHighlights;
+            const bool spdReflects = options.spd && (!m.ks.isBlack() || m.transmissive());
+            if (secondary && (m.reflective() || spdReflects)) e.kernel |= kReflection;
+            if (secondary && m.transmissive()) e.kernel |= kRefraction;
+        }
+    }
+    for (const Object& o : scene.objects)
+        if (o.mesh && o.mesh->hasNormals()) e.smoothNormals = true;
+    e.antialiasing = options.spp > 1 || options.adaptiveThreshold > 0;
+    e.aovs = options.wantAovs;
+    return e;
+}
+
+}  // namespace raylab

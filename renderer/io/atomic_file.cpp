@@ -1,0 +1,128 @@
+#include "renderer/io/atomic_file.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "renderer/io/errors.h"
+
+namespace raylab {
+
+namespace {
+
+// Registry of temporary files that a signal handler may have to delete. A slot
+// moves Free -> Filling (owned by one writer, being copied into) -> Ready
+// (visible to the handler) -> Free. The handler only reads Ready slots, whose
+// bytes are fully written before the release store that publishes them.
+enum SlotState : int { kFree = 0, kFilling = 1, kReady = 2 };
+
+static_assert(std::atomic<int>::is_always_lock_free,
+              "the signal handler needs lock-free atomics");
+
+struct TempSlot {
+    std::atomic<int> state{kFree};
+    char path[kMaxTempPathLength];
+};
+
+TempSlot g_slots[kMaxInFlightTempFiles];
+std::atomic<unsigned> g_counter{0};
+
+/// Records `path`; returns the slot index, or -1 when it cannot be tracked.
+int registerTemp(const std::string& path) {
+    if (path.size() + 1 > size_t(kMaxTempPathLength)) return -1;
+    for (int i = 0; i < kMaxInFlightTempFiles; ++i) {
+        int expected = kFree;
+        if (g_slots[i].state.compare_exchange_strong(expected, kFilling,
+                                                     std::memory_order_acquire)) {
+            std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
+            g_slots[i].state.store(kReady, std::memory_order_release);
+            return i;
+        }
+    }
+    return -1;
+}
+
+void unregisterTemp(int slot) {
+    if (slot >= 0) g_slots[slot].state.store(kFree, std::memory_order_release);
+}
+
+std::string tempNameFor(const std::string& path) {
+    // pid keeps concurrent processes apart, the counter concurrent threads.
+    return path + ".tmp." + std::to_string(long(::getpid())) + "." +
+           std::to_string(g_counter.fetch_add(1, std::memory_order_relaxed));
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& tmp, int slot,
+                       const std::string& reason) {
+    if (!tmp.empty()) ::unlink(tmp.c_str());
+    unregisterTemp(slot);
+    throw InputError(path, 0, "cannot write file: " + reason);
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(const std::string& tmpPath)>& writer) {
+    if (path.empty()) throw InputError("cannot write file: empty output path");
+    const std::string tmp = tempNameFor(path);
+    // Register before the file exists so there is no window in which an
+    // interrupt leaves an unregistered temporary behind.
+    const int slot = registerTemp(tmp);
+
+    // Creating the file here (rather than leaving it to the writer) gives a
+    // clear error naming the target when its directory is missing or read-only.
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int err = errno;
+        unregisterTemp(slot);
+        throw InputError(path, 0, std::string("cannot write file: ") + std::strerror(err));
+    }
+    ::close(fd);
+
+    try {
+        writer(tmp);
+    } catch (const std::exception& e) {
+        fail(path, tmp, slot, e.what());
+    } catch (...) {
+        fail(path, tmp, slot, "unknown error");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        fail(path, tmp, slot, std::string("rename failed: ") + std::strerror(err));
+    }
+    unregisterTemp(slot);
+}
+
+void writeFileAtomically(const std::string& path, const std::string& contents) {
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        std::FILE* f = std::fopen(tmp.c_str(), "wb");
+        if (!f) throw InputError(std::strerror(errno));
+        const size_t written = std::fwrite(contents.data(), 1, contents.size(), f);
+        const int writeErr = errno;
+        // fclose flushes; a full disk may only show up here.
+        const bool closed = std::fclose(f) == 0;
+        if (written != contents.size())
+            throw InputError(std::string("short write: ") + std::strerror(writeErr));
+        if (!closed) throw InputError(std::string("close failed: ") + std::strerror(errno));
+    });
+}
+
+void removeInFlightTempFiles() noexcept {
+    for (int i = 0; i < kMaxInFlightTempFiles; ++i)
+        if (g_slots[i].state.load(std::memory_order_acquire) == kReady)
+            ::unlink(g_slots[i].path);
+}
+
+int inFlightTempFileCount() noexcept {
+    int n = 0;
+    for (int i = 0; i < kMaxInFlightTempFiles; ++i)
+        if (g_slots[i].state.load(std::memory_order_acquire) == kReady) ++n;
+    return n;
+}
+
+}  // namespace raylab

@@ -1,0 +1,164 @@
+#include "renderer/io/exr_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+#include <vector>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
+
+#include "renderer/io/atomic_file.h"
+#include "renderer/io/errors.h"
+
+namespace raylab {
+
+namespace {
+
+using Imath::half;
+
+constexpr float kHalfMax = 65504.0f;  // largest finite half
+constexpr float kFloatMax = std::numeric_limits<float>::max();
+
+/// NaN -> 0, |v| > maxAbs -> ±maxAbs (this also turns ±Inf into ±maxAbs).
+float finiteClamp(float v, float maxAbs) {
+    if (std::isnan(v)) return 0.f;
+    return v > maxAbs ? maxAbs : (v < -maxAbs ? -maxAbs : v);
+}
+
+/// Checks that an AOV vector is either absent (empty) or holds `expected` values.
+void checkLayerSize(const std::string& path, const char* name, size_t size, size_t expected) {
+    if (size != 0 && size != expected)
+        throw InputError(path, 0,
+                         std::string("cannot write EXR: film layer '") + name + "' has " +
+                             std::to_string(size) + " values, expected " +
+                             std::to_string(expected));
+}
+
+/// Copy of `src` (or `count` copies of `fallback` when src is empty), made
+/// safe for a FLOAT channel. With `isDepth`, +inf ("no hit") is kept and NaN
+/// also becomes +inf; everything else is kept finite.
+std::vector<float> floatPlane(const std::vector<float>& src, size_t count, float fallback,
+                              bool isDepth) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    std::vector<float> out(count, fallback);
+    if (src.empty()) return out;
+    for (size_t i = 0; i < count; ++i) {
+        const float v = src[i];
+        if (isDepth && (v == inf || std::isnan(v)))
+            out[i] = inf;
+        else
+            out[i] = finiteClamp(v, kFloatMax);
+    }
+    return out;
+}
+
+std::vector<half> halfPlane(const std::vector<float>& src, size_t count) {
+    std::vector<half> out(count, half(0.f));
+    if (src.empty()) return out;
+    // Clamp first: Imath rounds to nearest, so anything above 65520 would become Inf.
+    for (size_t i = 0; i < count; ++i) out[i] = half(finiteClamp(src[i], kHalfMax));
+    return out;
+}
+
+/// Slice wants a mutable char pointer even for output.
+template <class T>
+char* bytes(T* p) {
+    return reinterpret_cast<char*>(p);
+}
+
+}  // namespace
+
+void writeExr(const std::string& path, const Film& film, const ExrOptions& opts) {
+    if (film.width <= 0 || film.height <= 0)
+        throw InputError(path, 0,
+                         "cannot write EXR: empty image (" + std::to_string(film.width) + "x" +
+                             std::to_string(film.height) + ")");
+    const size_t n = size_t(film.width) * size_t(film.height);
+    if (film.rgba.size() != n * 4)
+        throw InputError(path, 0,
+                         "cannot write EXR: film has " + std::to_string(film.rgba.size()) +
+                             " RGBA values, expected " + std::to_string(n * 4));
+    checkLayerSize(path, "depth", film.depth.size(), n);
+    checkLayerSize(path, "normal", film.normal.size(), n * 3);
+    checkLayerSize(path, "albedo", film.albedo.size(), n * 3);
+    checkLayerSize(path, "objectId", film.objectId.size(), n);
+
+    // Converted planes; interleaved layers keep the Film's layout and use strides.
+    const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
+    std::vector<float> rgbaF;
+    std::vector<half> rgbaH;
+    if (opts.floatPixels)
+        rgbaF = floatPlane(film.rgba, n * 4, 0.f, false);
+    else
+        rgbaH = halfPlane(film.rgba, n * 4);
+    std::vector<float> z =
+        floatPlane(film.depth, n, std::numeric_limits<float>::infinity(), true);
+    std::vector<float> normal = floatPlane(film.normal, n * 3, 0.f, false);
+    std::vector<half> albedo = halfPlane(film.albedo, n * 3);
+    std::vector<float> objectId = floatPlane(film.objectId, n, -1.f, false);
+
+    Imf::Header header(film.width, film.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.insert("raylab/command", Imf::StringAttribute(opts.commandLine));
+    header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
+    header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
+    header.insert("raylab/renderSeconds", Imf::FloatAttribute(float(opts.renderSeconds)));
+    if (!opts.scenePath.empty())
+        header.insert("raylab/scene", Imf::StringAttribute(opts.scenePath));
+    if (!opts.accel.empty()) header.insert("raylab/accel", Imf::StringAttribute(opts.accel));
+
+    Imf::ChannelList& channels = header.channels();
+    Imf::FrameBuffer fb;
+    const size_t w = size_t(film.width);
+    const char* rgbaNames[4] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c) {
+        channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
+        if (opts.floatPixels)
+            fb.insert(rgbaNames[c], Imf::Slice(Imf::FLOAT, bytes(rgbaF.data() + c),
+                                               4 * sizeof(float), 4 * sizeof(float) * w));
+        else
+            fb.insert(rgbaNames[c], Imf::Slice(Imf::HALF, bytes(rgbaH.data() + c),
+                                               4 * sizeof(half), 4 * sizeof(half) * w));
+    }
+    channels.insert("Z", Imf::Channel(Imf::FLOAT));
+    fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
+    const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
+    const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
+    for (int c = 0; c < 3; ++c) {
+        channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
+        fb.insert(normalNames[c], Imf::Slice(Imf::FLOAT, bytes(normal.data() + c),
+                                             3 * sizeof(float), 3 * sizeof(float) * w));
+        channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
+        fb.insert(albedoNames[c], Imf::Slice(Imf::HALF, bytes(albedo.data() + c),
+                                             3 * sizeof(half), 3 * sizeof(half) * w));
+    }
+    channels.insert("objectId", Imf::Channel(Imf::FLOAT));
+    fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId.data()), sizeof(float),
+                                     sizeof(float) * w));
+
+    // ZIP compression dominates the write; blocks are compressed in parallel
+    // but always written in scan-line order, so the bytes stay deterministic.
+    const int threads =
+        opts.threads > 0 ? opts.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    // OpenEXR runs compression tasks on its global pool (empty by default, i.e.
+    // everything on the calling thread); the per-file count alone adds no workers.
+    if (Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        // The OutputFile is closed (offset table written) when it goes out of
+        // scope, before writeFileAtomically renames the file.
+        Imf::OutputFile file(tmp.c_str(), header, threads);
+        file.setFrameBuffer(fb);
+        file.writePixels(film.height);
+    });
+}
+
+}  // namespace raylab

@@ -1,0 +1,447 @@
+#include "renderer/io/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include "renderer/io/errors.h"
+#include "renderer/io/text_file.h"
+#include "renderer/scene.h"
+
+namespace raylab {
+
+// ---------------------------------------------------------------------------
+// MeshTransform
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+MeshTransform MeshTransform::translate(const Vec3& offset) {
+    MeshTransform t;
+    t.translation = offset;
+    return t;
+}
+
+MeshTransform MeshTransform::scale(const Vec3& factors) {
+    MeshTransform t;
+    t.linear = {{{factors.x, 0, 0}, {0, factors.y, 0}, {0, 0, factors.z}}};
+    return t;
+}
+
+MeshTransform MeshTransform::rotate(const Vec3& axis, double degrees) {
+    // Rodrigues: R = cos θ I + sin θ [k]x + (1 - cos θ) k kᵀ, k the unit axis.
+    const Vec3 k = normalize(axis);
+    const double theta = degrees * kPi / 180.0;
+    const double c = std::cos(theta), s = std::sin(theta), C = 1 - c;
+    MeshTransform t;
+    t.linear = {{{c + k.x * k.x * C, k.x * k.y * C - k.z * s, k.x * k.z * C + k.y * s},
+                 {k.y * k.x * C + k.z * s, c + k.y * k.y * C, k.y * k.z * C - k.x * s},
+                 {k.z * k.x * C - k.y * s, k.z * k.y * C + k.x * s, c + k.z * k.z * C}}};
+    return t;
+}
+
+MeshTransform MeshTransform::then(const MeshTransform& next) const {
+    // next(this(p)) = N (L p + t) + n = (N L) p + (N t + n)
+    MeshTransform r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double sum = 0;
+            for (int k = 0; k < 3; ++k) sum += next.linear[i][k] * linear[k][j];
+            r.linear[i][j] = sum;
+        }
+    r.translation = next.applyPoint(translation);
+    return r;
+}
+
+Vec3 MeshTransform::applyPoint(const Vec3& p) const {
+    const auto& m = linear;
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + translation.x,
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + translation.y,
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + translation.z};
+}
+
+Vec3 MeshTransform::applyNormal(const Vec3& n) const {
+    // The inverse transpose equals cofactor(L) / det(L); the positive factor
+    // 1/|det| drops out under normalisation, but the sign of det must stay so
+    // a mirroring transform keeps normals on the side the winding says is outside.
+    const auto& m = linear;
+    const Vec3 r0{m[0][0], m[0][1], m[0][2]}, r1{m[1][0], m[1][1], m[1][2]},
+        r2{m[2][0], m[2][1], m[2][2]};
+    // Row i of the cofactor matrix is the cross product of the other two rows.
+    const Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+    const Vec3 out{dot(c0, n), dot(c1, n), dot(c2, n)};
+    return normalize(determinant() < 0 ? -out : out);
+}
+
+double MeshTransform::determinant() const {
+    const auto& m = linear;
+    return dot(Vec3{m[0][0], m[0][1], m[0][2]},
+               cross(Vec3{m[1][0], m[1][1], m[1][2]}, Vec3{m[2][0], m[2][1], m[2][2]}));
+}
+
+bool MeshTransform::isIdentity() const {
+    const MeshTransform id;
+    return linear == id.linear && translation == id.translation;
+}
+
+size_t ObjModel::triangleCount() const {
+    size_t n = 0;
+    for (const ObjMeshPart& p : parts) n += p.mesh->triangleCount();
+    return n;
+}
+
+// ---------------------------------------------------------------------------
+// Reading
+
+namespace {
+
+/// Splits tinyobjloader's newline-separated messages into trimmed lines.
+std::vector<std::string> splitMessages(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        const size_t a = line.find_first_not_of(" \t\r.");
+        if (a == std::string::npos) continue;
+        const size_t b = line.find_last_not_of(" \t\r");
+        out.push_back(line.substr(a, b - a + 1));
+    }
+    return out;
+}
+
+/// Line number in a tinyobjloader message such as "... (line 12.)", or 0.
+int lineInMessage(const std::string& message) {
+    const size_t at = message.find("line ");
+    if (at == std::string::npos) return 0;
+    return std::atoi(message.c_str() + at + 5);
+}
+
+/// Collects warnings once each, counting repeats (an OBJ without its MTL
+/// repeats "material not found" for every usemtl).
+class Warnings {
+public:
+    void add(const std::string& message) {
+        auto [it, inserted] = m_counts.emplace(message, 0);
+        if (inserted) m_order.push_back(message);
+        ++it->second;
+    }
+    std::vector<std::string> lines() const {
+        std::vector<std::string> out;
+        for (const std::string& m : m_order) {
+            const int n = m_counts.at(m);
+            out.push_back(n > 1 ? m + " (" + std::to_string(n) + " times)" : m);
+        }
+        return out;
+    }
+
+private:
+    std::map<std::string, int> m_counts;
+    std::vector<std::string> m_order;
+};
+
+/// Calls `fn(keyword, rest, lineNo)` for every statement line of an OBJ text;
+/// `keyword` and `rest` are [begin, end) pointer pairs within the line.
+template <class Fn>
+void forEachStatement(const std::string& text, Fn fn) {
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    int lineNo = 0;
+    while (p < end) {
+        const char* eol = p;
+        while (eol < end && *eol != '\n') ++eol;
+        ++lineNo;
+        const char* k = p;
+        while (k < eol && (*k == ' ' || *k == '\t')) ++k;
+        const char* ke = k;
+        while (ke < eol && *ke != ' ' && *ke != '\t' && *ke != '\r') ++ke;
+        if (ke > k) fn(std::string(k, ke), ke, eol, lineNo);
+        p = eol + 1;
+    }
+}
+
+/// Finds the first face line with a vertex or normal index out of range.
+/// Relative (negative) indices resolve against the elements read so far and
+/// positive ones against the whole file, as in tinyobjloader. This runs
+/// before tinyobjloader, whose triangulation reads vertices by index unchecked.
+/// Returns {line, message} or {0, ""}.
+std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
+    long vTotal = 0, vnTotal = 0;
+    forEachStatement(text, [&](const std::string& kw, const char*, const char*, int) {
+        if (kw == "v") ++vTotal;
+        if (kw == "vn") ++vnTotal;
+    });
+    auto check = [](long idx, long soFar, long total, const char* what,
+                    const char* plural) -> std::string {
+        const long resolved = idx > 0 ? idx - 1 : soFar + idx;
+        if (idx == 0 || resolved < 0 || resolved >= total)
+            return std::string("face refers to ") + what + " " + std::to_string(idx) +
+                   " but the file has " + std::to_string(total) + " " +
+                   (total == 1 ? what : plural);
+        return "";
+    };
+    long vSoFar = 0, vnSoFar = 0;
+    std::pair<int, std::string> bad{0, ""};
+    forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
+        if (kw == "v") ++vSoFar;
+        if (kw == "vn") ++vnSoFar;
+        if (kw != "f" || bad.first > 0) return;
+        while (true) {
+            while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
+            if (q >= eol) break;
+            // One corner: v, v/vt, v//vn or v/vt/vn.
+            const char* ce = q;
+            while (ce < eol && *ce != ' ' && *ce != '\t' && *ce != '\r') ++ce;
+            const std::string corner(q, ce);
+            q = ce;
+            std::string message = check(std::strtol(corner.c_str(), nullptr, 10), vSoFar, vTotal,
+                                        "vertex", "vertices");
+            const size_t s1 = corner.find('/');
+            const size_t s2 = s1 == std::string::npos ? s1 : corner.find('/', s1 + 1);
+            if (message.empty() && s2 != std::string::npos && s2 + 1 < corner.size())
+                message = check(std::strtol(corner.c_str() + s2 + 1, nullptr, 10), vnSoFar, vnTotal,
+                                "normal", "normals");
+            if (!message.empty()) {
+                bad = {line, message};
+                return;
+            }
+        }
+    });
+    return bad;
+}
+
+/// Line of the `index`-th (0-based) statement with keyword `kw`, or 0.
+int lineOfStatement(const std::string& text, const std::string& kw, size_t index) {
+    int found = 0;
+    size_t seen = 0;
+    forEachStatement(text, [&](const std::string& k, const char*, const char*, int line) {
+        if (found == 0 && k == kw && seen++ == index) found = line;
+    });
+    return found;
+}
+
+Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
+
+/// The MTL -> Whitted mapping documented in obj_loader.h.
+Material materialFromMtl(const tinyobj::material_t& m, const std::string& path, Warnings& warn) {
+    Material out;
+    out.name = m.name;
+    out.ka = colorOf(m.ambient);
+    out.kd = colorOf(m.diffuse);
+    out.ks = colorOf(m.specular);
+    out.shininess = m.shininess;
+    int illum = m.illum;
+    if (illum < 0 || illum > 10) {
+        warn.add("material '" + m.name + "': illum " + std::to_string(illum) +
+                 " is unknown; read as illum 2");
+        illum = 2;
+    }
+    if (illum == 0) out.ka = Color(0);
+    if (illum <= 1) out.ks = Color(0);
+    if (illum >= 3 && illum <= 7) out.km = colorOf(m.specular);
+    if (illum == 4 || illum == 6 || illum == 7) {
+        const Color tf = colorOf(m.transmittance);
+        out.kt = !tf.isBlack() ? tf : Color(1.0 - double(m.dissolve));
+    } else if (m.dissolve < 1) {
+        warn.add("material '" + m.name + "': dissolve d < 1 is ignored with illum " +
+                 std::to_string(illum) + " (transparency needs illum 4, 6 or 7)");
+    }
+    out.ior = m.ior > 0 ? m.ior : 1.0;
+    if (!m.diffuse_texname.empty() || !m.specular_texname.empty() || !m.bump_texname.empty() ||
+        !m.ambient_texname.empty() || !m.alpha_texname.empty())
+        warn.add("material '" + m.name + "': texture maps are not supported and are ignored");
+
+    for (const Color* c : {&out.ka, &out.kd, &out.ks, &out.km, &out.kt})
+        if (!c->isFinite() || c->r < 0 || c->g < 0 || c->b < 0)
+            throw InputError(path, 0, "material '" + m.name + "': colours must be finite and >= 0");
+    if (!(out.shininess >= 0 && std::isfinite(out.shininess)))
+        throw InputError(path, 0, "material '" + m.name + "': Ns must be finite and >= 0");
+    if (!std::isfinite(out.ior))
+        throw InputError(path, 0, "material '" + m.name + "': Ni must be finite");
+    return out;
+}
+
+/// Builds one mesh part, sharing vertices between triangles that use the same
+/// (position, normal) index pair.
+struct PartBuilder {
+    ObjMeshPart part;
+    std::unordered_map<uint64_t, uint32_t> vertexOf;
+    bool smooth = false;
+
+    uint32_t vertex(int v, int vn, const tinyobj::attrib_t& a, const MeshTransform& xf) {
+        const uint64_t key = (uint64_t(uint32_t(v)) << 32) | uint32_t(smooth ? vn + 1 : 0);
+        const auto [it, inserted] = vertexOf.emplace(key, uint32_t(part.mesh->positions.size()));
+        if (inserted) {
+            const auto& p = a.vertices;
+            part.mesh->positions.push_back(
+                xf.applyPoint(Vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
+            if (smooth) {
+                const auto& n = a.normals;
+                part.mesh->normals.push_back(
+                    xf.applyNormal(Vec3(n[3 * vn], n[3 * vn + 1], n[3 * vn + 2])));
+            }
+        }
+        return it->second;
+    }
+};
+
+}  // namespace
+
+ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
+    const std::string text = readTextFile(path);
+    // tinyobjloader only warns about bad indices (reporting the file's last
+    // line) and may read out of bounds first; check them here with the real line.
+    if (const auto [line, message] = findBadFaceIndex(text); line > 0)
+        throw InputError(path, line, message);
+
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> mtls;
+    std::string warnText, errText;
+    std::istringstream stream(text);
+    // MTL libraries are looked up beside the OBJ ("" = current directory).
+    tinyobj::MaterialFileReader mtlReader(directoryOf(path));
+    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &mtls, &warnText, &errText, &stream,
+                                     &mtlReader, /*triangulate=*/true,
+                                     /*default_vcols_fallback=*/false);
+    Warnings warn;
+    const std::vector<std::string> errors = splitMessages(errText);
+    if (!ok) {
+        const std::string first = errors.empty() ? "cannot parse the OBJ file" : errors.front();
+        throw InputError(path, lineInMessage(first), first);
+    }
+    for (const std::string& e : errors) warn.add(e);
+
+    const size_t vertexCount = attrib.vertices.size() / 3;
+    const size_t normalCount = attrib.normals.size() / 3;
+
+    // findBadFaceIndex checked the text already; this guards against our scan
+    // and tinyobjloader's parser disagreeing, never against a crash.
+    for (const auto& sh : shapes)
+        for (const auto& idx : sh.mesh.indices)
+            if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= vertexCount ||
+                idx.normal_index < -1 ||
+                (idx.normal_index >= 0 && size_t(idx.normal_index) >= normalCount))
+                throw InputError(path, 0, "face index out of range");
+    for (const std::string& w : splitMessages(warnText)) warn.add(w);
+
+    for (size_t i = 0; i < vertexCount; ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(attrib.vertices[3 * i + k]))
+                throw InputError(path, lineOfStatement(text, "v", i),
+                                 "vertex " + std::to_string(i + 1) + " is not finite");
+
+    ObjModel model;
+    for (const tinyobj::material_t& m : mtls)
+        model.materials.push_back(materialFromMtl(m, path, warn));
+    const uint32_t mtlCount = uint32_t(model.materials.size());
+    bool needDefault = false;
+
+    PartBuilder smooth, flat;
+    smooth.smooth = true;
+    smooth.part.mesh = std::make_shared<TriangleMesh>();
+    flat.part.mesh = std::make_shared<TriangleMesh>();
+    const MeshTransform& xf = options.transform;
+    const bool mirrored = xf.determinant() < 0;
+    size_t degenerate = 0;
+
+    auto validNormal = [&](int vn) {
+        if (vn < 0) return false;
+        const Vec3 n(attrib.normals[3 * vn], attrib.normals[3 * vn + 1],
+                     attrib.normals[3 * vn + 2]);
+        return isFinite(n) && lengthSquared(n) > 0;
+    };
+
+    for (const tinyobj::shape_t& s : shapes) {
+        size_t offset = 0;
+        for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f) {
+            const size_t n = s.mesh.num_face_vertices[f];
+            const int mid = f < s.mesh.material_ids.size() ? s.mesh.material_ids[f] : -1;
+            uint32_t material = mtlCount;  // the default material, appended below
+            if (mid >= 0 && uint32_t(mid) < mtlCount)
+                material = uint32_t(mid);
+            else
+                needDefault = true;
+            // tinyobjloader triangulates; fan anything it left as a polygon.
+            for (size_t k = 1; k + 1 < n; ++k) {
+                const tinyobj::index_t c[3] = {s.mesh.indices[offset], s.mesh.indices[offset + k],
+                                               s.mesh.indices[offset + k + 1]};
+                const bool hasNormals = validNormal(c[0].normal_index) &&
+                                        validNormal(c[1].normal_index) &&
+                                        validNormal(c[2].normal_index);
+                PartBuilder& b = hasNormals ? smooth : flat;
+                std::array<uint32_t, 3> tri;
+                for (int j = 0; j < 3; ++j)
+                    tri[j] = b.vertex(c[j].vertex_index, c[j].normal_index, attrib, xf);
+                // A mirroring transform reverses the winding; swap to keep the front side.
+                if (mirrored) std::swap(tri[1], tri[2]);
+                const auto& P = b.part.mesh->positions;
+                const Vec3 area = cross(P[tri[1]] - P[tri[0]], P[tri[2]] - P[tri[0]]);
+                // Zero-area triangles have no normal; Embree would never report them.
+                if (!(lengthSquared(area) > 0) || !isFinite(area)) {
+                    ++degenerate;
+                    continue;
+                }
+                b.part.mesh->triangles.push_back(tri);
+                b.part.faceMaterials.push_back(material);
+            }
+            offset += n;
+        }
+    }
+    if (degenerate > 0)
+        warn.add("dropped " + std::to_string(degenerate) + " degenerate (zero-area) triangle" +
+                 (degenerate > 1 ? "s" : ""));
+    if (needDefault) {
+        // Grey, lit by the ambient term too, so a bare OBJ is readable.
+        Material def;
+        def.name = "default";
+        def.ka = def.kd;
+        model.materials.push_back(def);
+    }
+    for (PartBuilder* b : {&smooth, &flat})
+        if (b->part.mesh->triangleCount() > 0) model.parts.push_back(std::move(b->part));
+    if (model.parts.empty()) throw InputError(path, 0, "the OBJ file has no triangles");
+
+    model.warnings = warn.lines();
+    if (options.printWarnings)
+        for (const std::string& w : model.warnings)
+            std::fprintf(stderr, "raylab: warning: %s: %s\n", path.c_str(), w.c_str());
+    return model;
+}
+
+void appendObjModel(Scene& scene, const ObjModel& model, const std::string& baseName,
+                    std::optional<uint32_t> overrideMaterial) {
+    const uint32_t firstMaterial = uint32_t(scene.materials.size());
+    if (!overrideMaterial) {
+        for (const Material& m : model.materials) {
+            scene.materials.push_back(m);
+            scene.materials.back().name = baseName + "/" + m.name;
+        }
+    }
+    for (size_t i = 0; i < model.parts.size(); ++i) {
+        const ObjMeshPart& part = model.parts[i];
+        Object obj;
+        obj.name = baseName;
+        if (model.parts.size() > 1 && !part.mesh->hasNormals()) obj.name += " (flat)";
+        obj.mesh = part.mesh;
+        if (overrideMaterial) {
+            obj.material = *overrideMaterial;
+        } else {
+            // One material for the whole part needs no per-face table.
+            bool uniform = true;
+            for (uint32_t m : part.faceMaterials) uniform = uniform && m == part.faceMaterials[0];
+            obj.material = firstMaterial + part.faceMaterials[0];
+            if (!uniform)
+                for (uint32_t m : part.faceMaterials)
+                    obj.faceMaterials.push_back(firstMaterial + m);
+        }
+        scene.objects.push_back(std::move(obj));
+    }
+}
+
+}  // namespace raylab

@@ -1,0 +1,29 @@
+#pragma once
+// 8-bit sRGB PNG preview of a Film's colour.
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "renderer/film.h"
+
+namespace raylab {
+
+/// \brief The sRGB transfer function (IEC 61966-2-1) on a linear value in [0, 1]:
+/// 12.92·v for v <= 0.0031308, else 1.055·v^(1/2.4) − 0.055.
+double linearToSrgb(double v);
+
+/// \brief Maps one linear RGB colour to 8-bit sRGB.
+///
+/// Each channel is scaled by 2^exposure, clamped to [0, 1], encoded with
+/// linearToSrgb and rounded to the nearest of 0..255. A non-finite channel
+/// (before or after scaling) maps to 0.
+std::array<uint8_t, 3> toneMapSrgb8(float r, float g, float b, double exposure);
+
+/// \brief Writes the RGB of `film` as an 8-bit RGB PNG (toneMapSrgb8 per
+/// pixel, row 0 at the top, sRGB chunk), atomically. Alpha is not written.
+/// \throws InputError(path, 0, reason) when the film is empty or inconsistent
+///         or the file cannot be written; `path` is then left untouched.
+void writePng(const std::string& path, const Film& film, double exposure = 0);
+
+}  // namespace raylab

@@ -1,0 +1,26 @@
+#pragma once
+// Whole-file reading for the scene readers, with errors that name the file.
+
+#include <string>
+
+namespace raylab {
+
+/// Reads the whole file at `path` as bytes (no newline translation).
+/// Throws InputError(path, 0, "cannot open: <reason>") when the file is
+/// missing, unreadable or a directory, and "read error: <reason>" when
+/// reading fails midway.
+std::string readTextFile(const std::string& path);
+
+/// The directory part of `path` including the trailing '/', or "" when the
+/// path has no directory ("scene.json" -> "", "a/b.json" -> "a/").
+std::string directoryOf(const std::string& path);
+
+/// `relative` resolved against the directory of `base`; absolute paths are
+/// returned unchanged ("scenes/demo.json", "meshes/t.obj" -> "scenes/meshes/t.obj").
+std::string resolveRelativeTo(const std::string& base, const std::string& relative);
+
+/// The extension of `path` in lower case, with its dot ("A/B.OBJ" -> ".obj"),
+/// or "" when the file name has none.
+std::string lowerExtension(const std::string& path);
+
+}  // namespace raylab

@@ -1,0 +1,280 @@
+#include "renderer/render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <vector>
+
+#include "renderer/sampler.h"
+#include "renderer/whitted_integrator.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct TileCounters {
+    RayCounters rays;
+    uint64_t nonFinite = 0;
+};
+
+/// Replaces a non-finite radiance by black and counts it: no NaN or Inf may
+/// ever reach a pixel.
+Color sanitize(const Color& c, uint64_t& nonFinite) {
+    if (c.isFinite()) return c;
+    ++nonFinite;
+    return Color{};
+}
+
+void storeFirstHit(Film& film, size_t i, const FirstHit& f) {
+    film.depth[i] = f.distance;
+    film.normal[3 * i + 0] = float(f.normal.x);
+    film.normal[3 * i + 1] = float(f.normal.y);
+    film.normal[3 * i + 2] = float(f.normal.z);
+    film.albedo[3 * i + 0] = float(f.albedo.r);
+    film.albedo[3 * i + 1] = float(f.albedo.g);
+    film.albedo[3 * i + 2] = float(f.albedo.b);
+    film.objectId[i] = f.objectId;
+}
+
+/// Per-pixel seed: a 64-bit mix of the render seed and the pixel index.
+uint64_t pixelSeed(uint64_t seed, uint64_t pixel) {
+    uint64_t z = seed * 0x9E3779B97F4A7C15ULL + pixel + 0x632BE59BD9B4E019ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+/// One radiance sample with its first-hit data.
+struct Sample {
+    Color c;
+    FirstHit first;
+};
+
+Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
+                   const RenderOptions& opt, double px, double py, TileCounters& tc) {
+    Sample s;
+    const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
+    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
+    return s;
+}
+
+double maxDifference(const Color& a, const Color& b) {
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+/// Whitted's adaptive supersampling of one pixel: trace the four corners of
+/// a square; where they differ by more than the threshold, split it into
+/// four and recurse, sharing corners through a per-pixel cache. Box filter:
+/// each square contributes the mean of its corners, weighted by its area.
+class AdaptivePixel {
+public:
+    AdaptivePixel(const WhittedIntegrator& integrator, const Scene& scene,
+                  const RenderOptions& opt, int x, int y, TileCounters& tc)
+        : m_integrator(integrator), m_scene(scene), m_opt(opt), m_x(x), m_y(y), m_tc(tc),
+          m_res(1 << opt.adaptiveMaxLevel) {
+        m_cache.resize(size_t(m_res + 1) * (m_res + 1));
+        m_done.assign(m_cache.size(), false);
+    }
+
+    /// Returns the pixel's radiance and coverage; `first` gets the corner (0, 0).
+    Color run(double& coverage, FirstHit& first) {
+        const Color c = square(0, 0, m_res, coverage);
+        first = corner(0, 0).first;
+        return c;
+    }
+
+private:
+    const Sample& corner(int i, int j) {
+        const size_t k = size_t(j) * (m_res + 1) + i;
+        if (!m_done[k]) {
+            m_cache[k] = traceSample(m_integrator, m_scene, m_opt, m_x + double(i) / m_res,
+                                     m_y + double(j) / m_res, m_tc);
+            m_done[k] = true;
+        }
+        return m_cache[k];
+    }
+
+    /// Square with top-left grid corner (i, j) and side `size` grid steps.
+    Color square(int i, int j, int size, double& coverage) {
+        const Sample& a = corner(i, j);
+        const Sample& b = corner(i + size, j);
+        const Sample& c = corner(i, j + size);
+        const Sample& d = corner(i + size, j + size);
+        const double diff = std::max({maxDifference(a.c, b.c), maxDifference(a.c, c.c),
+                                      maxDifference(a.c, d.c), maxDifference(b.c, c.c),
+                                      maxDifference(b.c, d.c), maxDifference(c.c, d.c)});
+        if (size > 1 && diff > m_opt.adaptiveThreshold) {
+            const int h = size / 2;
+            double cov[4];
+            const Color sum = square(i, j, h, cov[0]) + square(i + h, j, h, cov[1]) +
+                              square(i, j + h, h, cov[2]) + square(i + h, j + h, h, cov[3]);
+            coverage = 0.25 * (cov[0] + cov[1] + cov[2] + cov[3]);
+            return sum * 0.25;
+        }
+        coverage = 0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit);
+        return (a.c + b.c + c.c + d.c) * 0.25;
+    }
+
+    const WhittedIntegrator& m_integrator;
+    const Scene& m_scene;
+    const RenderOptions& m_opt;
+    int m_x, m_y;
+    TileCounters& m_tc;
+    int m_res;  ///< finest grid steps per pixel side: 2^maxLevel
+    std::vector<Sample> m_cache;
+    std::vector<bool> m_done;
+};
+
+void storePixel(Film& film, size_t i, const Color& c, double coverage) {
+    film.rgba[4 * i + 0] = float(c.r);
+    film.rgba[4 * i + 1] = float(c.g);
+    film.rgba[4 * i + 2] = float(c.b);
+    film.rgba[4 * i + 3] = float(coverage);
+}
+
+/// Renders pixel (x, y) with stratified supersampling.
+void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
+                 const RenderOptions& opt, Film& film, int x, int y, TileCounters& tc) {
+    const size_t i = film.index(x, y);
+    if (opt.adaptiveThreshold > 0) {
+        double coverage = 0;
+        FirstHit first;
+        const Color c = AdaptivePixel(integrator, scene, opt, x, y, tc).run(coverage, first);
+        if (first.hit && opt.wantAovs) storeFirstHit(film, i, first);
+        storePixel(film, i, c, coverage);
+        return;
+    }
+    const int n = std::max(1, opt.spp);
+    Pcg32 rng(pixelSeed(opt.seed, i), 0);
+    // n-rooks permutation for non-square sample counts (Fisher-Yates).
+    std::vector<int> perm;
+    const int m = int(std::lround(std::sqrt(double(n))));
+    if (n > 1 && m * m != n) {
+        perm.resize(n);
+        std::iota(perm.begin(), perm.end(), 0);
+        for (int k = n - 1; k > 0; --k) std::swap(perm[k], perm[rng.next() % uint32_t(k + 1)]);
+    }
+    Color sum;
+    int hits = 0;
+    for (int k = 0; k < n; ++k) {
+        const auto [sx, sy] = stratifiedSample(k, n, rng, perm.data());
+        const Sample s = traceSample(integrator, scene, opt, x + sx, y + sy, tc);
+        sum += s.c;
+        hits += s.first.hit;
+        // The AOV layers come from the first sample (the centre when spp = 1).
+        if (k == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
+    }
+    storePixel(film, i, sum / double(n), double(hits) / n);
+}
+
+/// SPD procedure: one eye ray through every pixel corner ((W+1)·(H+1) rays),
+/// each pixel the mean of its four corners. Rows of corners run in parallel.
+void renderCorners(const WhittedIntegrator& integrator, const Scene& scene,
+                   const RenderOptions& opt, Film& film,
+                   tbb::enumerable_thread_specific<TileCounters>& counters,
+                   const std::function<void(int rowsDone, int rows)>& rowDone,
+                   const std::atomic<bool>* cancel) {
+    const int cw = opt.width + 1, ch = opt.height + 1;
+    std::vector<Sample> corners(size_t(cw) * ch);
+    std::atomic<int> rowsDone{0};
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, ch, 1),
+        [&](const tbb::blocked_range<int>& range) {
+            TileCounters& tc = counters.local();
+            for (int j = range.begin(); j != range.end(); ++j) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return;
+                for (int i = 0; i < cw; ++i)
+                    corners[size_t(j) * cw + i] = traceSample(integrator, scene, opt, i, j, tc);
+                rowDone(++rowsDone, ch);
+            }
+        },
+        tbb::simple_partitioner());
+    if (cancel && cancel->load()) return;
+    for (int y = 0; y < opt.height; ++y) {
+        for (int x = 0; x < opt.width; ++x) {
+            const Sample& a = corners[size_t(y) * cw + x];
+            const Sample& b = corners[size_t(y) * cw + x + 1];
+            const Sample& c = corners[size_t(y + 1) * cw + x];
+            const Sample& d = corners[size_t(y + 1) * cw + x + 1];
+            const size_t i = film.index(x, y);
+            if (a.first.hit && opt.wantAovs) storeFirstHit(film, i, a.first);
+            storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25,
+                       0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit));
+        }
+    }
+}
+
+}  // namespace
+
+RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                    const EffectSet& effects, const ProgressCallback& progress,
+                    const std::atomic<bool>* cancel) {
+    std::unique_ptr<tbb::global_control> threadLimit;
+    if (options.threads > 0)
+        threadLimit = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+
+    RenderResult result;
+    result.film = Film(options.width, options.height);
+    WhittedIntegrator integrator(scene, accel, options, effects);
+
+    const int tilesX = (options.width + kTileSize - 1) / kTileSize;
+    const int tilesY = (options.height + kTileSize - 1) / kTileSize;
+    const int tileCount = tilesX * tilesY;
+    tbb::enumerable_thread_specific<TileCounters> counters;
+    std::atomic<int> tilesDone{0};
+    std::mutex progressMutex;
+
+    const auto start = std::chrono::steady_clock::now();
+    if (options.spd) {
+        renderCorners(integrator, scene, options, result.film, counters,
+                      [&](int done, int rows) {
+                          if (!progress) return;
+                          std::lock_guard<std::mutex> lock(progressMutex);
+                          progress(double(done) / rows);
+                      },
+                      cancel);
+    } else {
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tileCount, 1),
+        [&](const tbb::blocked_range<int>& range) {
+            TileCounters& tc = counters.local();
+            for (int tile = range.begin(); tile != range.end(); ++tile) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return;
+                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, options.width);
+                const int y1 = std::min(y0 + kTileSize, options.height);
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x)
+                        renderPixel(integrator, scene, options, result.film, x, y, tc);
+                const int done = ++tilesDone;
+                if (progress) {
+                    std::lock_guard<std::mutex> lock(progressMutex);
+                    progress(double(done) / tileCount);
+                }
+            }
+        },
+        tbb::simple_partitioner());
+    }
+    result.renderSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // Integer sums: the same totals whatever the thread count.
+    for (const TileCounters& tc : counters) {
+        result.rays += tc.rays;
+        result.nonFiniteSamples += tc.nonFinite;
+    }
+    result.cancelled = cancel && cancel->load();
+    return result;
+}
+
+}  // namespace raylab

@@ -1,0 +1,34 @@
+#pragma once
+// Everything that controls one render, after the scene file's settings and the
+// command-line flags have been merged (flags win).
+
+#include <string>
+
+#include "geometry/shape.h"
+#include "geometry/spawn.h"
+#include "renderer/accel/accelerator.h"
+
+namespace raylab {
+
+struct RenderOptions {
+    int width = 640;
+    int height = 480;
+    int spp = 1;              ///< samples per pixel (stratified, jittered when > 1)
+    int maxDepth = 5;         ///< ray-tree depth limit, the camera ray is depth 1
+    double minWeight = 0;     ///< Hall & Greenberg pruning: skip rays whose weight < this (0 = off)
+    double adaptiveThreshold = 0;  ///< Whitted adaptive supersampling threshold (0 = off)
+    int adaptiveMaxLevel = 2;      ///< subdivision levels below the pixel corners
+    uint64_t seed = 0;        ///< jitter seed; the image is a pure function of it
+
+    int threads = 0;          ///< 0 = all cores
+    std::string accel = "embree";
+    AccelOptions accelOptions;
+    SpawnSettings spawn;      ///< self-intersection strategy
+    Precision precision = Precision::Double;
+
+    bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
+    bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)
+    bool wantAovs = true;      ///< depth/normal/albedo/objectId layers are filled
+};
+
+}  // namespace raylab

@@ -1,0 +1,71 @@
+#include "renderer/render_setup.h"
+
+#include <unistd.h>
+
+#include "renderer/io/errors.h"
+
+namespace raylab {
+
+RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o) {
+    RenderOptions r;
+    r.width = scene.image.width;
+    r.height = scene.image.height;
+    r.spp = scene.image.spp;
+    r.maxDepth = scene.image.maxDepth;
+    if (o.spd) {
+        r.spd = true;
+        r.width = r.height = 512;
+        r.maxDepth = 5;
+        r.spp = 1;
+    }
+    if (o.width) r.width = *o.width;
+    if (o.height) r.height = *o.height;
+    if (o.spp) r.spp = *o.spp;
+    if (o.maxDepth) r.maxDepth = *o.maxDepth;
+    if (o.threads) r.threads = *o.threads;
+    if (o.adaptiveThreshold) r.adaptiveThreshold = *o.adaptiveThreshold;
+    if (o.adaptiveMaxLevel) r.adaptiveMaxLevel = *o.adaptiveMaxLevel;
+    if (o.minWeight) r.minWeight = *o.minWeight;
+    if (o.seed) r.seed = *o.seed;
+    if (o.accel) r.accel = *o.accel;
+    if (o.bvhQuality) {
+        r.accelOptions.quality = *o.bvhQuality == "low"    ? AccelOptions::BvhQuality::Low
+                                 : *o.bvhQuality == "high" ? AccelOptions::BvhQuality::High
+                                                           : AccelOptions::BvhQuality::Medium;
+    }
+    r.accelOptions.robust = o.robust;
+    if (o.precision) r.precision = *o.precision == "float" ? Precision::Float : Precision::Double;
+    if (o.epsilon) {
+        r.spawn.mode = OffsetMode::FixedEpsilon;
+        r.spawn.epsilon = *o.epsilon;
+    }
+    if (o.effects) r.forceAllEffects = *o.effects == "all";
+    // Geometry goes to Embree in float relative to the eye (camera-relative
+    // rendering), and secondary-ray offsets are scaled in the same frame.
+    r.accelOptions.origin = scene.camera.frame().eye;
+    r.spawn.reference = scene.camera.frame().eye;
+    return r;
+}
+
+void checkMemoryBudget(const Scene& scene, const RenderOptions& options) {
+    // Film: RGBA + Z + N + albedo + objectId floats, plus the output encoders'
+    // copies (about as much again).
+    const double pixels = double(options.width) * double(options.height);
+    const double bytes = pixels * (4 + 1 + 3 + 3 + 1) * sizeof(float) * 2.0;
+    const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (available > 0 && bytes > 0.8 * available) {
+        throw InputError(scene.sourcePath, 0,
+                         "a " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) + " image needs about " +
+                             std::to_string(int64_t(bytes / (1 << 20))) +
+                             " MiB, more than this machine's memory allows (" +
+                             std::to_string(int64_t(available / (1 << 20))) + " MiB)");
+    }
+}
+
+void applyPrecision(Scene& scene, Precision precision) {
+    for (Object& o : scene.objects)
+        if (o.shape) o.shape->setPrecision(precision);
+}
+
+}  // namespace raylab

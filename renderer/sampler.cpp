@@ -1,0 +1,19 @@
+#include "renderer/sampler.h"
+
+#include <cmath>
+
+namespace raylab {
+
+std::pair<double, double> stratifiedSample(int k, int n, Pcg32& rng, const int* rookPermutation) {
+    if (n <= 1) return {0.5, 0.5};
+    const int m = int(std::lround(std::sqrt(double(n))));
+    if (m * m == n) {
+        const int sx = k % m, sy = k / m;
+        const double jx = rng.uniform(), jy = rng.uniform();
+        return {(sx + jx) / m, (sy + jy) / m};
+    }
+    const double jx = rng.uniform(), jy = rng.uniform();
+    return {(k + jx) / n, (rookPermutation[k] + jy) / n};
+}
+
+}  // namespace raylab

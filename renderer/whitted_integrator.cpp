@@ -1,0 +1,150 @@
+#include "renderer/whitted_integrator.h"
+
+#include <cmath>
+
+#include "geometry/spawn.h"
+#include "shading/brdf.h"
+#include "shading/optics.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& accel,
+                                     const RenderOptions& options, const EffectSet& effects)
+    : m_scene(scene), m_accel(accel), m_options(options), m_effects(effects) {
+    // The general kernel traces every ray type at every hit, zero weights
+    // included; SPD's procedure traces zero-weight reflection rays too.
+    m_prune = !options.forceAllEffects;
+    // One instantiation of trace<E> per effect combination, chosen once here.
+    static_assert(kAllKernelEffects == 15, "update the dispatch table");
+    static constexpr Kernel table[16] = {
+        &WhittedIntegrator::trace<0>,  &WhittedIntegrator::trace<1>,
+        &WhittedIntegrator::trace<2>,  &WhittedIntegrator::trace<3>,
+        &WhittedIntegrator::trace<4>,  &WhittedIntegrator::trace<5>,
+        &WhittedIntegrator::trace<6>,  &WhittedIntegrator::trace<7>,
+        &WhittedIntegrator::trace<8>,  &WhittedIntegrator::trace<9>,
+        &WhittedIntegrator::trace<10>, &WhittedIntegrator::trace<11>,
+        &WhittedIntegrator::trace<12>, &WhittedIntegrator::trace<13>,
+        &WhittedIntegrator::trace<14>, &WhittedIntegrator::trace<15>,
+    };
+    m_kernel = table[m_effects.kernel & kAllKernelEffects];
+}
+
+Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const {
+    const double tNear = m_scene.cameraNear / length(cameraRay.d);
+    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first);
+}
+
+template <unsigned E>
+Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
+                                    const Vec3& n, const Vec3& ng, const Vec3& toViewer,
+                                    int depth, RayCounters& counters) const {
+    Color result = m.ka * m_scene.ambient;  // ambient once, kept in shadow
+    if constexpr ((E & kShadows) == 0) {
+        return result;
+    } else {
+        if (m_prune && !m.hasLocalShading()) return result;
+        for (const Light& light : m_scene.lights) {
+            Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
+            double tMax;
+            if (light.type == Light::Type::Point) {
+                toLight = light.position - si.p;
+                tMax = 1.0;
+            } else {
+                toLight = -light.direction;
+                tMax = kInf;
+            }
+            const Vec3 l = normalize(toLight);
+            // No shadow ray when the normal faces away from the light. The
+            // general kernel traces it anyway and then adds nothing, so both
+            // kernels produce the same image.
+            const bool facing = dot(n, l) > 0;
+            if (m_prune && !facing) continue;
+            const SpawnedRay shadow = spawnRay(si.p, ng, toLight, m_options.spawn);
+            counters.count(RayType::Shadow, depth + 1);
+            if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) continue;
+            result += lambert(m.kd, light.intensity, n, l);
+            if constexpr ((E & kHighlights) != 0) {
+                if (!m_prune || !m.ks.isBlack())
+                    result += blinnPhong(m.ks, m.shininess, light.intensity, n, l, toViewer);
+            }
+        }
+        return result;
+    }
+}
+
+template <unsigned E>
+Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
+                               double weight, RayCounters& counters, FirstHit* first) const {
+    counters.count(type, depth);
+    const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
+    if (!hit) return m_scene.background;
+    if (type == RayType::Camera) counters.cameraHits++;
+
+    const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit);
+    const Material& m = m_scene.materials[si.material];
+    // Normals on the side the ray arrives from; `entering` is false when the
+    // ray is inside the object (it hit the back of the outward normal).
+    const bool entering = si.frontFace;
+    const Vec3 n = entering ? si.ns : -si.ns;
+    const Vec3 ng = entering ? si.ng : -si.ng;
+    const Vec3 dir = normalize(ray.d);
+
+    if (first) {
+        first->hit = true;
+        first->distance = float(hit->t * length(ray.d));
+        first->normal = si.ns;
+        first->albedo = m.kd;
+        first->objectId = float(si.object);
+    }
+
+    Color result = shadeLocal<E>(si, m, n, ng, -dir, depth, counters);
+    if (depth >= m_options.maxDepth) return result;
+
+    constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;
+    if constexpr (kAnySecondary) {
+        // Refraction first: total internal reflection hands its energy to the
+        // mirror ray, so both weights are known before any ray is traced.
+        Color reflectWeight = m.km;
+        bool traceReflection = false;
+        if constexpr ((E & kReflection) != 0) {
+            traceReflection = !m_prune || m.reflective() ||
+                              (m_options.spd && (!m.ks.isBlack() || m.transmissive()));
+        }
+        if constexpr ((E & kRefraction) != 0) {
+            if (!m_prune || m.transmissive()) {
+                const double etaI = entering ? 1.0 : m.ior;
+                const double etaT = entering ? m.ior : 1.0;
+                const std::optional<Vec3> t = refract(dir, n, etaI, etaT);
+                if (t) {
+                    const double w = weight * m.kt.maxComponent();
+                    if (!m_prune || w >= m_options.minWeight) {
+                        const SpawnedRay r = spawnRay(si.p, ng, *t, m_options.spawn);
+                        result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
+                                                  counters, nullptr);
+                    }
+                } else {
+                    reflectWeight += m.kt;  // total internal reflection
+                    traceReflection = traceReflection || m.transmissive() || !m_prune;
+                }
+            }
+        }
+        if (traceReflection) {
+            const double w = weight * reflectWeight.maxComponent();
+            if (!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) {
+                const Vec3 r = reflect(dir, n);
+                const SpawnedRay s = spawnRay(si.p, ng, r, m_options.spawn);
+                result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
+                                                   counters, nullptr);
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace raylab

@@ -1,0 +1,349 @@
+// Embree-specific behaviour of the adaptor: the ray it hands to Embree (mask,
+// flags, interval rounding, camera-relative origin), bounds Embree would drop
+// (infinite, NaN), bad meshes, the device configuration, and queries made
+// directly on rtcHandle(): bare rtcIntersect1 replay, 8-wide packets and
+// streams (callbacks handle any N and valid[]), masks and the occlusion marker.
+
+#include <doctest/doctest.h>
+#include <embree3/rtcore.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "accel/accel_test_helpers.h"
+#include "renderer/accel/embree_accelerator.h"
+#include "renderer/accel/naive_accelerator.h"
+
+using namespace raylab;
+using namespace raylab::accel_test;
+
+namespace {
+
+/// Objects: 0 = unit sphere at the origin, 1 = quad [2,4]×[-1,1] at z = 0.
+Scene smallScene() {
+    Scene scene;
+    scene.materials.resize(1);
+    scene.objects.push_back(shapeObject("ball", makeSphere({0, 0, 0}, 1)));
+    scene.objects.push_back(meshObject("quad", quadMesh(2, -1, 4, 1, 0)));
+    return scene;
+}
+
+RTCRayHit rayHit(const EmbreeAccelerator& accel, const Ray& ray, double tMin, double tMax) {
+    RTCRayHit rh{};
+    REQUIRE(accel.toEmbreeRay(ray, tMin, tMax, rh.ray));
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+}  // namespace
+
+TEST_CASE("embree: the Embree ray is relative to the origin, masked, and brackets the interval") {
+    const Scene scene = smallScene();
+    AccelOptions options;
+    options.origin = {100, 0, 0};
+    const EmbreeAccelerator accel(scene, options);
+    CHECK(accel.origin() == Vec3{100, 0, 0});
+
+    RTCRay r{};
+    REQUIRE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0.5, -1}}, 0.1, kInf, r));
+    CHECK(r.org_x == 1.0f);  // 101 - 100
+    CHECK(r.org_y == 2.0f);
+    CHECK(r.org_z == 3.0f);
+    CHECK(r.dir_y == 0.5f);
+    CHECK(r.mask == 0xFFFFFFFFu);  // an unset mask drops hits silently
+    CHECK(r.flags == 0u);
+    CHECK(r.time == 0.0f);
+    // 0.1 is not a float: tnear is the largest float below it.
+    CHECK(double(r.tnear) < 0.1);
+    CHECK(double(std::nextafter(r.tnear, 1.0f)) > 0.1);
+    CHECK(r.tfar == std::numeric_limits<float>::infinity());
+
+    REQUIRE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0, 1}}, -5, 1e300, r));
+    CHECK(r.tnear == 0.0f);                                   // Embree requires tnear >= 0
+    CHECK(r.tfar == std::numeric_limits<float>::infinity());  // beyond float range
+    REQUIRE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0, 1}}, 0, 2.5, r));
+    CHECK(r.tfar == 2.5f);
+
+    // Not traceable: non-finite, zero direction, empty interval, beyond float range.
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0, 0}}, 0, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0, 1}}, 1, 1, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{1e300, 2, 3}, {0, 0, 1}}, 0, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {1e-60, 0, 0}}, 0, kInf, r));
+}
+
+TEST_CASE("embree: camera-relative data keeps a tiny triangle far from the world origin") {
+    // A triangle with 0.003-long legs at (1e5, 1e5, 1e5 - 10): a float ulp
+    // there is 2^-7 = 0.0078, so in absolute float coordinates all three
+    // vertices round to the same point (0.003 < half an ulp) and the triangle
+    // vanishes. Relative to the eye
+    // (1e5, 1e5, 1e5) it is exact.
+    const Vec3 eye{1e5, 1e5, 1e5};
+    Scene scene;
+    scene.materials.resize(1);
+    auto mesh = std::make_shared<TriangleMesh>();
+    mesh->positions = {eye + Vec3{0, 0, -10}, eye + Vec3{0.003, 0, -10}, eye + Vec3{0, 0.003, -10}};
+    mesh->triangles = {{0, 1, 2}};
+    scene.objects.push_back(meshObject("tiny", mesh));
+    // And a sphere of radius 0.002 beside it: analytic shapes are intersected
+    // in double either way, only their (outward-rounded) boxes are float.
+    scene.objects.push_back(shapeObject("speck", makeSphere(eye + Vec3{0.02, 0, -10}, 0.002)));
+
+    AccelOptions relative;
+    relative.origin = eye;
+    const EmbreeAccelerator rel(scene, relative);
+    const EmbreeAccelerator abs(scene, AccelOptions{});
+    const NaiveAccelerator naive(scene);
+
+    // Rays from the eye to the centroid and to points 10% inside each vertex.
+    const Vec3 c = (mesh->positions[0] + mesh->positions[1] + mesh->positions[2]) / 3.0;
+    for (int k = -1; k < 3; ++k) {
+        const Vec3 target = k < 0 ? c : mesh->positions[k] + (c - mesh->positions[k]) * 0.1;
+        const Ray ray{eye, target - eye};
+        const auto n = naive.intersect(ray, 0, kInf);
+        const auto r = rel.intersect(ray, 0, kInf);
+        REQUIRE(n);
+        REQUIRE(r);
+        CHECK(r->object == 0);
+        CHECK(r->prim == 0);
+        CHECK(r->t == doctest::Approx(n->t).epsilon(1e-6));
+        CHECK_FALSE(abs.intersect(ray, 0, kInf));  // collapsed in absolute float coordinates
+    }
+    const Ray toSpeck{eye, Vec3{0.02, 0.0005, -10}};
+    const auto ns = naive.intersect(toSpeck, 0, kInf);
+    REQUIRE(ns);
+    for (const EmbreeAccelerator* accel : {&rel, &abs}) {
+        const auto h = accel->intersect(toSpeck, 0, kInf);
+        REQUIRE(h);
+        CHECK(h->object == 1);
+        CHECK(h->t == ns->t);  // bit-identical double
+    }
+}
+
+TEST_CASE("embree: infinite bounds are clamped, not silently dropped") {
+    // Embree ignores a user primitive whose box is not finite (NUMERICS.md §1);
+    // the adaptor clamps it to ±1e18 around the origin, so it stays hittable.
+    Scene scene;
+    scene.materials.resize(1);
+    scene.objects.push_back(shapeObject("unbounded", std::make_unique<UnboundedPlaneZ>(-2)));
+    const EmbreeAccelerator accel(scene);
+    const NaiveAccelerator naive(scene);
+    for (const Vec3& o : {Vec3{0, 0, 0}, Vec3{1e6, -3e6, 0}, Vec3{-1e12, 1e12, 5}}) {
+        const Ray ray{o, {0, 0, -1}};
+        const auto h = accel.intersect(ray, 0, kInf);
+        REQUIRE(h);
+        CHECK(h->t == naive.intersect(ray, 0, kInf)->t);
+        CHECK(accel.occluded(ray, 0, kInf));
+    }
+    RTCBounds b;
+    rtcGetSceneBounds(accel.rtcHandle(), &b);
+    CHECK(b.lower_x <= -1e17f);
+    CHECK(b.upper_y >= 1e17f);
+    CHECK(std::isfinite(b.lower_x));
+
+    // The clipped plane of primitives.h reports finite bounds and is hit.
+    auto plane = makePlane({0, 0, -1}, {0, 0, 1});
+    CHECK(plane->bounds().finite());
+    Scene planeScene;
+    planeScene.objects.push_back(shapeObject("plane", std::move(plane)));
+    const EmbreeAccelerator planeAccel(planeScene);
+    const auto p = planeAccel.intersect(Ray{{5e4, 5e4, 3}, {0, 0, -1}}, 0, kInf);
+    REQUIRE(p);
+    CHECK(p->t == doctest::Approx(4.0).epsilon(1e-15));
+}
+
+TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") {
+    SUBCASE("NaN bounds") {
+        Scene scene;
+        scene.objects.push_back(shapeObject("broken", std::make_unique<NanBoundsShape>()));
+        CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
+                             "embree: object 'broken' (nan-bounds) has NaN bounds",
+                             std::invalid_argument);
+    }
+    SUBCASE("index out of range") {
+        Scene scene;
+        auto mesh = quadMesh(0, 0, 1, 1, 0);
+        mesh->triangles[1][2] = 4;
+        scene.objects.push_back(meshObject("bad", mesh));
+        CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
+                             "embree: mesh 'bad': triangle 1 uses vertex 4 of 4",
+                             std::invalid_argument);
+    }
+    SUBCASE("non-finite vertex") {
+        Scene scene;
+        auto mesh = quadMesh(0, 0, 1, 1, 0);
+        mesh->positions[2].y = std::numeric_limits<double>::quiet_NaN();
+        scene.objects.push_back(meshObject("nan", mesh));
+        CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
+                             "embree: mesh 'nan': vertex 2 is not finite or too far from the "
+                             "origin",
+                             std::invalid_argument);
+    }
+}
+
+TEST_CASE("embree: device configuration") {
+    const Scene scene = smallScene();
+    // threads= would throttle the whole process through tbb::global_control.
+    CHECK_THROWS_AS(EmbreeAccelerator(scene, {}, "threads=2"), std::invalid_argument);
+    CHECK_THROWS_AS(EmbreeAccelerator(scene, {}, "verbose=0, threads = 1"), std::invalid_argument);
+    // A malformed value makes rtcNewDevice fail; surfaced as an exception.
+    // (Embree 3.13.5 silently ignores unknown keys such as "no_such_option=1".)
+    CHECK_THROWS_WITH_AS(EmbreeAccelerator(scene, {}, "verbose=x"),
+                         "embree: cannot create device (RTC_ERROR_UNKNOWN)", std::runtime_error);
+    // Pinning the ISA (golden tests): analytic hits stay bit-identical.
+    const EmbreeAccelerator sse2(scene, {}, "isa=sse2");
+    const EmbreeAccelerator native(scene);
+    const Ray ray{{0.3, 0.2, 5}, {0, 0, -1}};
+    const auto a = sse2.intersect(ray, 0, kInf);
+    const auto b = native.intersect(ray, 0, kInf);
+    REQUIRE(a);
+    REQUIRE(b);
+    CHECK(a->t == b->t);
+    CHECK(native.buildSeconds() >= 0);
+    CHECK(native.buildSeconds() < 10);
+    CHECK(native.rtcHandle() != nullptr);
+}
+
+TEST_CASE("embree: bare rtcIntersect1 replay, masks and the occlusion marker") {
+    const Scene scene = smallScene();
+    const EmbreeAccelerator accel(scene);
+    REQUIRE(accel.userGeometryId() != RTC_INVALID_GEOMETRY_ID);
+    const Ray toBall{{0.25, 0, 5}, {0, 0, -1}};  // sphere at t = 5 - sqrt(1 - 0.0625)
+    const Ray toQuad{{3, 0.5, 5}, {0, 0, -1}};   // quad at t = 5
+
+    // Without the double ray in the context the callbacks use Embree's float lane.
+    for (const Ray& ray : {toBall, toQuad}) {
+        RTCRayHit rh = rayHit(accel, ray, 0, kInf);
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
+        const auto bare = accel.decode(rh, ctx);
+        const auto full = accel.intersect(ray, 0, kInf);
+        REQUIRE(bare);
+        REQUIRE(full);
+        CHECK(bare->object == full->object);
+        CHECK(bare->t == doctest::Approx(full->t).epsilon(1e-6));
+        CHECK(rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID);
+    }
+    {
+        // The analytic callback fills Embree's hit record per the contract.
+        RTCRayHit rh = rayHit(accel, toBall, 0, kInf);
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, &toBall, 0, kInf);
+        rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
+        CHECK(rh.hit.geomID == accel.userGeometryId());
+        CHECK(rh.hit.primID == 0);
+        CHECK(rh.ray.tfar == static_cast<float>(ctx.bestT));
+        CHECK(ctx.bestT == doctest::Approx(5 - std::sqrt(0.9375)).epsilon(1e-15));
+        // Outward normal at (0.25, 0, sqrt(0.9375)).
+        CHECK(rh.hit.Ng_x == doctest::Approx(0.25).epsilon(1e-6));
+        CHECK(rh.hit.Ng_z == doctest::Approx(std::sqrt(0.9375)).epsilon(1e-6));
+    }
+    for (const Ray& ray : {toBall, toQuad}) {
+        // Mask 0 matches no geometry (default geometry mask is all ones).
+        RTCRayHit rh = rayHit(accel, ray, 0, kInf);
+        rh.ray.mask = 0;
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, &ray, 0, kInf);
+        rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
+        CHECK(rh.hit.geomID == RTC_INVALID_GEOMETRY_ID);
+
+        // Occlusion writes -inf on a hit and leaves tfar alone on a miss.
+        RTCRay r{};
+        REQUIRE(accel.toEmbreeRay(ray, 0, kInf, r));
+        rtcOccluded1(accel.rtcHandle(), &ctx.rtc, &r);
+        CHECK(r.tfar == -std::numeric_limits<float>::infinity());
+        REQUIRE(accel.toEmbreeRay(ray, 0, 3.0, r));  // both hits are beyond t = 3
+        EmbreeAccelerator::initContext(ctx, &ray, 0, 3.0);
+        rtcOccluded1(accel.rtcHandle(), &ctx.rtc, &r);
+        CHECK(r.tfar == 3.0f);
+    }
+}
+
+TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handle any N)") {
+    const Scene scene = randomScene(11, 60);
+    const EmbreeAccelerator accel(scene);
+    Rng rng(21);
+    constexpr int kRays = 8 * 64;
+    std::vector<Ray> rays;
+    for (int i = 0; i < kRays; ++i) rays.push_back(Ray{rng.point(-12, 12), rng.direction()});
+
+    // Reference: single rays through the bare path (float lanes, like packets).
+    std::vector<std::optional<Hit>> single(kRays);
+    for (int i = 0; i < kRays; ++i) {
+        RTCRayHit rh = rayHit(accel, rays[i], 0, kInf);
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
+        single[i] = accel.decode(rh, ctx);
+    }
+
+    int packetDiffer = 0, streamDiffer = 0, packetInvalidHit = 0, hits = 0;
+    const auto differs = [&](const std::optional<Hit>& a, const std::optional<Hit>& b) {
+        return a.has_value() != b.has_value() ||
+               (a && (a->object != b->object || a->prim != b->prim ||
+                      std::abs(a->t - b->t) > 1e-6 * std::max(1.0, a->t)));
+    };
+    for (int base = 0; base < kRays; base += 8) {
+        alignas(32) RTCRayHit8 packet;
+        alignas(32) int valid[8];
+        for (int k = 0; k < 8; ++k) {
+            const RTCRayHit rh = rayHit(accel, rays[base + k], 0, kInf);
+            valid[k] = (k == 5) ? 0 : -1;  // lane 5 inactive: must stay untouched
+            packet.ray.org_x[k] = rh.ray.org_x;
+            packet.ray.org_y[k] = rh.ray.org_y;
+            packet.ray.org_z[k] = rh.ray.org_z;
+            packet.ray.dir_x[k] = rh.ray.dir_x;
+            packet.ray.dir_y[k] = rh.ray.dir_y;
+            packet.ray.dir_z[k] = rh.ray.dir_z;
+            packet.ray.tnear[k] = rh.ray.tnear;
+            packet.ray.tfar[k] = rh.ray.tfar;
+            packet.ray.time[k] = 0;
+            packet.ray.mask[k] = rh.ray.mask;
+            packet.ray.id[k] = 0;
+            packet.ray.flags[k] = 0;
+            packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        }
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        rtcIntersect8(valid, accel.rtcHandle(), &ctx.rtc, &packet);
+        for (int k = 0; k < 8; ++k) {
+            RTCRayHit rh{};
+            rh.ray.tfar = packet.ray.tfar[k];
+            rh.hit.u = packet.hit.u[k];
+            rh.hit.v = packet.hit.v[k];
+            rh.hit.primID = packet.hit.primID[k];
+            rh.hit.geomID = packet.hit.geomID[k];
+            if (k == 5) {
+                packetInvalidHit += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                continue;
+            }
+            packetDiffer += differs(accel.decode(rh, ctx), single[base + k]);
+        }
+    }
+    {
+        std::vector<RTCRayHit> stream(kRays);
+        for (int i = 0; i < kRays; ++i) stream[i] = rayHit(accel, rays[i], 0, kInf);
+        EmbreeQueryContext ctx;
+        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        rtcIntersect1M(accel.rtcHandle(), &ctx.rtc, stream.data(), kRays, sizeof(RTCRayHit));
+        for (int i = 0; i < kRays; ++i) {
+            const auto h = accel.decode(stream[i], ctx);
+            hits += h.has_value();
+            streamDiffer += differs(h, single[i]);
+        }
+    }
+    MESSAGE("packets/streams: ", kRays, " rays, ", hits, " hits, packet differences ", packetDiffer,
+            ", stream differences ", streamDiffer);
+    CHECK(hits > kRays / 4);
+    CHECK(packetInvalidHit == 0);
+    CHECK(packetDiffer == 0);
+    CHECK(streamDiffer == 0);
+}

@@ -1,0 +1,120 @@
+// The benchmark entry points: option checks happen before anything runs, the
+// pixel sample covers every column, and a tiny limit benchmark runs end to end
+// (no timing assertions: only structure and the recording/replay checks).
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <string>
+
+#include "renderer/bench/accel_bench.h"
+#include "renderer/bench/limit_bench.h"
+#include "renderer/io/errors.h"
+
+using namespace raylab;
+
+namespace {
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::filesystem::path tempDir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("raylab_test_bench_" + name);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+TEST_CASE("pixel sample stride: smallest k >= requested that is coprime with the width") {
+    CHECK(pixelSampleStride(1, 256) == 1);
+    CHECK(pixelSampleStride(0, 256) == 1);
+    // 256 = 2^8: 4 and 6 share a factor 2, 5 and 7 do not.
+    CHECK(pixelSampleStride(4, 256) == 5);
+    CHECK(pixelSampleStride(6, 256) == 7);
+    // 255 = 3·5·17: 6 shares 3; 7 is coprime.
+    CHECK(pixelSampleStride(6, 255) == 7);
+    // Every column is visited: pixels k/2 + s·k (mod width) for a coprime k.
+    const int width = 64;
+    const size_t k = pixelSampleStride(10, width);
+    CHECK(k == 11);
+    std::vector<bool> seen(width, false);
+    for (size_t s = 0; s < size_t(width); ++s) seen[(k / 2 + s * k) % width] = true;
+    CHECK(std::accumulate(seen.begin(), seen.end(), 0) == width);
+}
+
+TEST_CASE("bench accel: invalid options are rejected before any measurement") {
+    std::ostringstream out;
+    AccelBenchOptions o;
+    o.runs = 0;
+    CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
+    o = {};
+    o.width = 0;
+    CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
+    o = {};
+    o.naiveBudgetSeconds = 0;
+    CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
+    o = {};
+    o.outPath = "results.txt";
+    CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
+    o = {};
+    o.plotPath = "plot.png";
+    CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
+    CHECK(out.str().empty());  // nothing ran
+    CHECK(std::string(kBenchAccelHelp).rfind("usage: raylab bench accel", 0) == 0);
+}
+
+TEST_CASE("bench limit: invalid options are rejected") {
+    std::ostringstream out;
+    LimitBenchOptions o;
+    CHECK_THROWS_AS(runLimitBench(o, out), UsageError);  // no scene
+    o.scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json";
+    o.runs = 0;
+    CHECK_THROWS_AS(runLimitBench(o, out), UsageError);
+    o.runs = 1;
+    o.outPath = "limit.xml";
+    CHECK_THROWS_AS(runLimitBench(o, out), UsageError);
+    CHECK(std::string(kBenchLimitHelp).rfind("usage: raylab bench limit", 0) == 0);
+}
+
+TEST_CASE("bench limit: a tiny run records, replays and reports") {
+    const auto dir = tempDir("limit");
+    const std::string json = (dir / "limit.json").string();
+    const std::string csv = (dir / "limit.csv").string();
+    LimitBenchOptions o;
+    o.scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json";
+    o.width = 24;
+    o.height = 18;
+    o.runs = 1;
+    o.threads = 1;
+    o.outPath = json;
+    std::ostringstream out;
+    CHECK(runLimitBench(o, out) == 0);
+    const std::string report = out.str();
+    CHECK(report.find("recording: matches") != std::string::npos);
+    CHECK(report.find("disagrees with the recorded hit/miss on 0 rays (interface replay: 0)") !=
+          std::string::npos);
+    CHECK(report.find("bare Embree replay") != std::string::npos);
+    const std::string doc = readFile(json);
+    CHECK(doc.find("\"recording_matches_counters\": true") != std::string::npos);
+    CHECK(doc.find("\"replay_disagreements\": 0") != std::string::npos);
+    // demo.json at spp 4: 24·18·4 camera rays.
+    CHECK(doc.find("\"camera\": 1728") != std::string::npos);
+
+    o.outPath = csv;
+    o.threads = 2;
+    std::ostringstream out2;
+    CHECK(runLimitBench(o, out2) == 0);
+    const std::string table = readFile(csv);
+    CHECK(table.rfind("scene,width,height,spd,threads", 0) == 0);
+    CHECK(std::count(table.begin(), table.end(), '\n') == 2);  // header + one row
+    std::filesystem::remove_all(dir);
+}

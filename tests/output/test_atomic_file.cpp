@@ -1,0 +1,122 @@
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "renderer/io/atomic_file.h"
+#include "renderer/io/errors.h"
+#include "test_temp_dir.h"
+
+using namespace raylab;
+using raylab::test::readBytes;
+using raylab::test::TempDir;
+
+TEST_CASE("atomic file: string overload writes the bytes and leaves no temporary") {
+    TempDir dir;
+    const std::string target = dir.file("doc.json");
+    writeFileAtomically(target, std::string("{\"a\": 1}\n\0x", 11));
+    CHECK(readBytes(target) == std::string("{\"a\": 1}\n\0x", 11));
+    CHECK(dir.entries() == std::vector<std::string>{"doc.json"});
+    CHECK(inFlightTempFileCount() == 0);
+
+    // Replacing an existing file.
+    writeFileAtomically(target, std::string("new"));
+    CHECK(readBytes(target) == "new");
+    CHECK(dir.entries() == std::vector<std::string>{"doc.json"});
+}
+
+TEST_CASE("atomic file: the writer gets an empty registered temporary beside the target") {
+    TempDir dir;
+    const std::string target = dir.file("img.exr");
+    std::string seen;
+    writeFileAtomically(target, [&](const std::string& tmp) {
+        seen = tmp;
+        CHECK(std::filesystem::path(tmp).parent_path() == dir.path());
+        CHECK(tmp.rfind(target + ".tmp.", 0) == 0);
+        CHECK(std::filesystem::exists(tmp));
+        CHECK(std::filesystem::file_size(tmp) == 0);
+        CHECK_FALSE(std::filesystem::exists(target));  // not visible until complete
+        CHECK(inFlightTempFileCount() == 1);
+        std::ofstream(tmp, std::ios::binary) << "payload";
+    });
+    CHECK(readBytes(target) == "payload");
+    CHECK_FALSE(std::filesystem::exists(seen));
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: a throwing writer leaves the target absent and no temporary") {
+    TempDir dir;
+    const std::string target = dir.file("out.png");
+    try {
+        writeFileAtomically(target, [](const std::string& tmp) {
+            std::ofstream(tmp) << "half written";
+            throw std::runtime_error("disk on fire");
+        });
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == target);
+        CHECK(e.line() == 0);
+        CHECK(std::string(e.what()).find("disk on fire") != std::string::npos);
+    }
+    CHECK(dir.entries().empty());
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: a failed write keeps the previous file intact") {
+    TempDir dir;
+    const std::string target = dir.file("out.exr");
+    writeFileAtomically(target, std::string("old"));
+    CHECK_THROWS_AS(writeFileAtomically(target,
+                                        [](const std::string& tmp) {
+                                            std::ofstream(tmp) << "partial";
+                                            throw std::runtime_error("interrupted");
+                                        }),
+                    InputError);
+    CHECK(readBytes(target) == "old");
+    CHECK(dir.entries() == std::vector<std::string>{"out.exr"});
+}
+
+TEST_CASE("atomic file: missing directory and unrenamable target are InputErrors") {
+    TempDir dir;
+    const std::string missing = dir.file("no/such/dir/out.exr");
+    try {
+        writeFileAtomically(missing, std::string("x"));
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == missing);
+        CHECK(std::string(e.what()).find("No such file or directory") != std::string::npos);
+    }
+    CHECK(dir.entries().empty());
+
+    // A non-empty directory cannot be replaced by rename(2): the temporary
+    // must be cleaned up and the directory left alone.
+    const std::string target = dir.file("occupied");
+    std::filesystem::create_directories(target + "/child");
+    CHECK_THROWS_AS(writeFileAtomically(target, std::string("x")), InputError);
+    CHECK(dir.entries() == std::vector<std::string>{"occupied"});
+    CHECK(std::filesystem::is_directory(target + "/child"));
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: removeInFlightTempFiles deletes the temporary of a write in progress") {
+    TempDir dir;
+    const std::string target = dir.file("big.exr");
+    std::string tmpSeen;
+    // Simulates the SIGINT handler running while the image is being written:
+    // the temporary disappears, so the final rename fails and nothing is left.
+    CHECK_THROWS_AS(writeFileAtomically(target,
+                                        [&](const std::string& tmp) {
+                                            tmpSeen = tmp;
+                                            std::ofstream(tmp) << "partial";
+                                            removeInFlightTempFiles();
+                                            CHECK_FALSE(std::filesystem::exists(tmp));
+                                        }),
+                    InputError);
+    CHECK_FALSE(tmpSeen.empty());
+    CHECK(dir.entries().empty());
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: empty path is rejected") {
+    CHECK_THROWS_AS(writeFileAtomically("", std::string("x")), InputError);
+}

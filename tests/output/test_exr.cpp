@@ -1,0 +1,310 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <string>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include "renderer/io/errors.h"
+#include "renderer/io/exr_reader.h"
+#include "renderer/io/exr_writer.h"
+#include "test_temp_dir.h"
+
+using namespace raylab;
+using raylab::test::TempDir;
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+/// 3x2 film with a different value in every channel of every pixel; pixel
+/// (2, 1) is background (Z = +inf, objectId = -1, zero normal and albedo).
+Film makeFilm() {
+    Film f(3, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x) {
+            const size_t i = f.index(x, y);
+            const float k = float(i);
+            f.rgba[4 * i + 0] = 0.1f + 0.3f * k;  // 0.1 .. 1.6: mostly not half-exact
+            f.rgba[4 * i + 1] = 0.2f * k;
+            f.rgba[4 * i + 2] = 1000.123f + k;
+            f.rgba[4 * i + 3] = 1.0f - 0.25f * k;
+            if (x == 2 && y == 1) continue;  // background pixel keeps the Film defaults
+            f.depth[i] = 1.5f + 2.25f * k + 1e-3f;
+            f.normal[3 * i + 0] = 0.6f;
+            f.normal[3 * i + 1] = -0.8f + 1e-7f * k;
+            f.normal[3 * i + 2] = 0.0f;
+            f.albedo[3 * i + 0] = 0.7f;
+            f.albedo[3 * i + 1] = 0.05f * k;
+            f.albedo[3 * i + 2] = 0.333f;
+            f.objectId[i] = float(i * 7);
+        }
+    return f;
+}
+
+float viaHalf(float v) { return float(Imath::half(v)); }
+
+ExrOptions makeOptions(bool floatPixels) {
+    ExrOptions o;
+    o.floatPixels = floatPixels;
+    o.commandLine = "raylab render scenes/demo.json -o out.exr --spp 4";
+    o.scenePath = "scenes/demo.json";
+    o.accel = "embree";
+    o.spp = 4;
+    o.maxDepth = 5;
+    o.renderSeconds = 1.25;
+    return o;
+}
+
+std::map<std::string, Imf::PixelType> channelTypes(const std::string& path) {
+    Imf::InputFile in(path.c_str());
+    std::map<std::string, Imf::PixelType> types;
+    for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it)
+        types[it.name()] = it.channel().type;
+    return types;
+}
+
+}  // namespace
+
+TEST_CASE("exr: exact channel list, types, compression and header attributes") {
+    TempDir dir;
+    const std::string path = dir.file("img.exr");
+    writeExr(path, makeFilm(), makeOptions(false));
+    CHECK(dir.entries() == std::vector<std::string>{"img.exr"});  // no temporary left
+
+    const std::map<std::string, Imf::PixelType> expected = {
+        {"R", Imf::HALF},        {"G", Imf::HALF},        {"B", Imf::HALF},
+        {"A", Imf::HALF},        {"Z", Imf::FLOAT},       {"N.X", Imf::FLOAT},
+        {"N.Y", Imf::FLOAT},     {"N.Z", Imf::FLOAT},     {"albedo.R", Imf::HALF},
+        {"albedo.G", Imf::HALF}, {"albedo.B", Imf::HALF}, {"objectId", Imf::FLOAT}};
+    CHECK(channelTypes(path) == expected);
+
+    Imf::InputFile in(path.c_str());
+    const Imf::Header& h = in.header();
+    CHECK(h.compression() == Imf::ZIP_COMPRESSION);
+    CHECK(h.dataWindow().min.x == 0);
+    CHECK(h.dataWindow().min.y == 0);
+    CHECK(h.dataWindow().max.x == 2);
+    CHECK(h.dataWindow().max.y == 1);
+    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("raylab/command"));
+    CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/command").value() ==
+          "raylab render scenes/demo.json -o out.exr --spp 4");
+    REQUIRE(h.findTypedAttribute<Imf::IntAttribute>("raylab/spp"));
+    CHECK(h.typedAttribute<Imf::IntAttribute>("raylab/spp").value() == 4);
+    REQUIRE(h.findTypedAttribute<Imf::IntAttribute>("raylab/maxDepth"));
+    CHECK(h.typedAttribute<Imf::IntAttribute>("raylab/maxDepth").value() == 5);
+    REQUIRE(h.findTypedAttribute<Imf::FloatAttribute>("raylab/renderSeconds"));
+    CHECK(h.typedAttribute<Imf::FloatAttribute>("raylab/renderSeconds").value() == 1.25f);
+    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("raylab/scene"));
+    CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/scene").value() == "scenes/demo.json");
+    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("raylab/accel"));
+    CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/accel").value() == "embree");
+}
+
+TEST_CASE("exr: --float-pixels switches only RGBA to FLOAT; empty scene/accel are omitted") {
+    TempDir dir;
+    const std::string path = dir.file("img.exr");
+    ExrOptions o = makeOptions(true);
+    o.scenePath.clear();
+    o.accel.clear();
+    writeExr(path, makeFilm(), o);
+    const auto types = channelTypes(path);
+    CHECK(types.size() == 12);
+    for (const char* c : {"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "objectId"})
+        CHECK(types.at(c) == Imf::FLOAT);
+    for (const char* c : {"albedo.R", "albedo.G", "albedo.B"}) CHECK(types.at(c) == Imf::HALF);
+    Imf::InputFile in(path.c_str());
+    CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/scene") == nullptr);
+    CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/accel") == nullptr);
+    CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/command"));
+}
+
+TEST_CASE("exr: values round-trip (FLOAT exact, HALF to the nearest half, Z=+inf kept)") {
+    TempDir dir;
+    const Film src = makeFilm();
+    for (bool floatPixels : {false, true}) {
+        CAPTURE(floatPixels);
+        const std::string path = dir.file(floatPixels ? "f.exr" : "h.exr");
+        writeExr(path, src, makeOptions(floatPixels));
+        const Film back = readExr(path);
+        REQUIRE(back.width == 3);
+        REQUIRE(back.height == 2);
+        REQUIRE(back.rgba.size() == src.rgba.size());
+        REQUIRE(back.depth.size() == src.depth.size());
+        REQUIRE(back.normal.size() == src.normal.size());
+        REQUIRE(back.albedo.size() == src.albedo.size());
+        REQUIRE(back.objectId.size() == src.objectId.size());
+        for (size_t i = 0; i < src.rgba.size(); ++i) {
+            // HALF: the stored value is the half nearest to the input, which
+            // widens back to float exactly; relative error <= 2^-11.
+            const float expected = floatPixels ? src.rgba[i] : viaHalf(src.rgba[i]);
+            CHECK(back.rgba[i] == expected);
+            CHECK(std::fabs(back.rgba[i] - src.rgba[i]) <= std::fabs(src.rgba[i]) * 0x1p-11f);
+        }
+        for (size_t i = 0; i < src.depth.size(); ++i) CHECK(back.depth[i] == src.depth[i]);
+        CHECK(std::isinf(back.depth[src.index(2, 1)]));
+        CHECK(back.depth[src.index(2, 1)] > 0);
+        for (size_t i = 0; i < src.normal.size(); ++i) CHECK(back.normal[i] == src.normal[i]);
+        for (size_t i = 0; i < src.albedo.size(); ++i)
+            CHECK(back.albedo[i] == viaHalf(src.albedo[i]));
+        for (size_t i = 0; i < src.objectId.size(); ++i)
+            CHECK(back.objectId[i] == src.objectId[i]);
+        CHECK(back.objectId[src.index(2, 1)] == -1.f);
+    }
+    // 0.1f is not representable in half: make sure the HALF path really rounded.
+    CHECK(viaHalf(0.1f) != 0.1f);
+}
+
+TEST_CASE("exr: out-of-range and non-finite colour is clamped, never Inf or NaN") {
+    TempDir dir;
+    Film f(2, 2);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    // Pixel 0: above half range, +inf, NaN, below -half range.
+    f.rgba[0] = 1e6f;
+    f.rgba[1] = kInf;
+    f.rgba[2] = nan;
+    f.rgba[3] = -1e6f;
+    // Pixel 1: 65519 rounds to 65504 in half, 65520 would round to Inf without the clamp.
+    f.rgba[4] = 65519.f;
+    f.rgba[5] = 65520.f;
+    f.rgba[6] = 65504.f;
+    f.rgba[7] = 1.f;
+    f.albedo[0] = 1e9f;  // albedo is HALF too
+    f.normal[0] = nan;   // FLOAT layers: NaN -> 0
+    f.depth[3] = nan;    // Z: NaN means "no hit" -> +inf
+
+    writeExr(dir.file("h.exr"), f, makeOptions(false));
+    const Film h = readExr(dir.file("h.exr"));
+    CHECK(h.rgba[0] == 65504.f);
+    CHECK(h.rgba[1] == 65504.f);
+    CHECK(h.rgba[2] == 0.f);
+    CHECK(h.rgba[3] == -65504.f);
+    CHECK(h.rgba[4] == 65504.f);
+    CHECK(h.rgba[5] == 65504.f);
+    CHECK(h.rgba[6] == 65504.f);
+    CHECK(h.albedo[0] == 65504.f);
+    CHECK(h.normal[0] == 0.f);
+    CHECK(h.depth[3] == kInf);
+    for (float v : h.rgba) CHECK(std::isfinite(v));
+
+    writeExr(dir.file("f.exr"), f, makeOptions(true));
+    const Film fl = readExr(dir.file("f.exr"));
+    CHECK(fl.rgba[0] == 1e6f);  // FLOAT keeps large finite values
+    CHECK(fl.rgba[1] == std::numeric_limits<float>::max());
+    CHECK(fl.rgba[2] == 0.f);
+    CHECK(fl.rgba[3] == -1e6f);
+    CHECK(fl.rgba[5] == 65520.f);
+}
+
+TEST_CASE("exr: reader fills missing channels (A = 1, absent layers empty)") {
+    TempDir dir;
+    const std::string path = dir.file("rgb.exr");
+    // An RGB-only file written directly with OpenEXR, data window not at the origin.
+    const int w = 2, h = 1;
+    float rgb[w * h * 3] = {0.25f, 0.5f, 0.75f, 1.f, 2.f, 3.f};
+    Imf::Header header(Imath::Box2i({0, 0}, {9, 9}), Imath::Box2i({4, 7}, {5, 7}));
+    Imf::FrameBuffer fb;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+        fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgb + c, header.dataWindow(),
+                                             3 * sizeof(float), 3 * sizeof(float) * w));
+    }
+    {
+        Imf::OutputFile out(path.c_str(), header);
+        out.setFrameBuffer(fb);
+        out.writePixels(h);
+    }
+    const Film f = readExr(path);
+    CHECK(f.width == 2);
+    CHECK(f.height == 1);
+    CHECK(f.rgba == std::vector<float>{0.25f, 0.5f, 0.75f, 1.f, 1.f, 2.f, 3.f, 1.f});
+    CHECK(f.depth.empty());
+    CHECK(f.normal.empty());
+    CHECK(f.albedo.empty());
+    CHECK(f.objectId.empty());
+}
+
+TEST_CASE("exr: errors are InputErrors naming the file; nothing is left behind") {
+    TempDir dir;
+    const std::string missing = dir.file("missing.exr");
+    try {
+        readExr(missing);
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == missing);
+    }
+
+    const std::string garbage = dir.file("garbage.exr");
+    std::ofstream(garbage) << "this is not an EXR file";
+    CHECK_THROWS_AS(readExr(garbage), InputError);
+
+    const std::string badDir = dir.file("nope/out.exr");
+    try {
+        writeExr(badDir, makeFilm(), makeOptions(false));
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == badDir);
+    }
+
+    CHECK_THROWS_AS(writeExr(dir.file("empty.exr"), Film(), makeOptions(false)), InputError);
+    Film broken = makeFilm();
+    broken.normal.resize(5);
+    CHECK_THROWS_AS(writeExr(dir.file("broken.exr"), broken, makeOptions(false)), InputError);
+    CHECK(dir.entries() == std::vector<std::string>{"garbage.exr"});
+}
+
+TEST_CASE("exr: the same film gives byte-identical files") {
+    TempDir dir;
+    writeExr(dir.file("a.exr"), makeFilm(), makeOptions(false));
+    writeExr(dir.file("b.exr"), makeFilm(), makeOptions(false));
+    const std::string a = raylab::test::readBytes(dir.file("a.exr"));
+    CHECK(!a.empty());
+    CHECK(a == raylab::test::readBytes(dir.file("b.exr")));
+}
+
+TEST_CASE("exr: the file bytes do not depend on the compression thread count") {
+    TempDir dir;
+    // Tall enough for many 16-line ZIP blocks, so several are in flight at once.
+    Film f(64, 200);
+    for (size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = float(i % 251) / 7.f;
+    for (size_t i = 0; i < f.depth.size(); ++i) f.depth[i] = float(i % 13);
+    ExrOptions o = makeOptions(false);
+    o.threads = 1;
+    writeExr(dir.file("one.exr"), f, o);
+    o.threads = 4;
+    writeExr(dir.file("four.exr"), f, o);
+    const std::string one = raylab::test::readBytes(dir.file("one.exr"));
+    CHECK(one.size() > 1000);
+    CHECK(one == raylab::test::readBytes(dir.file("four.exr")));
+    CHECK(readExr(dir.file("four.exr")).depth == f.depth);
+}
+
+TEST_CASE("exr: empty AOV vectors are written as the Film defaults") {
+    TempDir dir;
+    Film f(2, 1);
+    f.rgba = {1.f, 0.5f, 0.25f, 1.f, 0.f, 0.f, 0.f, 0.f};
+    f.depth.clear();
+    f.normal.clear();
+    f.albedo.clear();
+    f.objectId.clear();
+    writeExr(dir.file("rgba.exr"), f, makeOptions(false));
+    CHECK(channelTypes(dir.file("rgba.exr")).size() == 12);
+    const Film back = readExr(dir.file("rgba.exr"));
+    CHECK(back.rgba == f.rgba);  // all four values are exact in half
+    CHECK(back.depth == std::vector<float>{kInf, kInf});
+    CHECK(back.normal == std::vector<float>(6, 0.f));
+    CHECK(back.albedo == std::vector<float>(6, 0.f));
+    CHECK(back.objectId == std::vector<float>{-1.f, -1.f});
+}

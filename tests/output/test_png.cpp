@@ -1,0 +1,142 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include <png.h>
+
+#include "renderer/io/errors.h"
+#include "renderer/io/png_writer.h"
+#include "test_temp_dir.h"
+
+using namespace raylab;
+using raylab::test::readBytes;
+using raylab::test::TempDir;
+
+namespace {
+
+std::array<uint8_t, 3> grey(uint8_t v) { return {v, v, v}; }
+
+uint32_t bigEndian32(const std::string& s, size_t at) {
+    return uint32_t(uint8_t(s[at])) << 24 | uint32_t(uint8_t(s[at + 1])) << 16 |
+           uint32_t(uint8_t(s[at + 2])) << 8 | uint32_t(uint8_t(s[at + 3]));
+}
+
+}  // namespace
+
+TEST_CASE("png: sRGB transfer function branches") {
+    // Linear segment up to and including the threshold: 12.92 * 0.0031308 = 0.040449936.
+    CHECK(linearToSrgb(0.0) == 0.0);
+    CHECK(linearToSrgb(0.0031308) == 12.92 * 0.0031308);
+    CHECK(linearToSrgb(0.0031308) == doctest::Approx(0.040449936).epsilon(1e-12));
+    // Just above it the power branch applies: 1.055 * 0.0031309^(1/2.4) - 0.055
+    // = 0.0404511777786 (the linear formula would give 0.0404512280).
+    CHECK(linearToSrgb(0.0031309) == doctest::Approx(0.0404511777786).epsilon(1e-10));
+    CHECK(linearToSrgb(0.0031309) != doctest::Approx(12.92 * 0.0031309).epsilon(1e-9));
+    // The two pieces meet at the threshold (to ~1e-7, the curve's known tiny gap).
+    CHECK(std::fabs(1.055 * std::pow(0.0031308, 1 / 2.4) - 0.055 - 12.92 * 0.0031308) < 1e-7);
+    CHECK(linearToSrgb(1.0) == doctest::Approx(1.0).epsilon(1e-15));
+}
+
+TEST_CASE("png: toneMapSrgb8 hand-computed values") {
+    // 0 -> 0 and 1 -> 1.055 - 0.055 = 1 -> 255.
+    CHECK(toneMapSrgb8(0.f, 0.f, 0.f, 0) == grey(0));
+    CHECK(toneMapSrgb8(1.f, 1.f, 1.f, 0) == grey(255));
+    // 0.5: 0.5^(1/2.4) = exp(ln 0.5 / 2.4) = exp(-0.2888113) = 0.7491535;
+    // 1.055 * 0.7491535 - 0.055 = 0.7353570; * 255 = 187.516 -> rounds to 188.
+    CHECK(toneMapSrgb8(0.5f, 0.5f, 0.5f, 0) == grey(188));
+    // 0.18 (mid grey): 1.055 * 0.18^(1/2.4) - 0.055 = 0.4613561; * 255 = 117.646 -> 118.
+    // 0.25: 1.055 * 0.25^(1/2.4) - 0.055 = 0.5370987; * 255 = 136.960 -> 137.
+    // 0.01: 1.055 * 0.01^(1/2.4) - 0.055 = 0.0998528; * 255 = 25.462 -> 25.
+    CHECK(toneMapSrgb8(0.18f, 0.25f, 0.01f, 0) == std::array<uint8_t, 3>{118, 137, 25});
+    // Linear segment: 0.001 * 12.92 * 255 = 3.2946 -> 3; 0.002 -> 6.5892 -> 7 (rounds up,
+    // not truncated); threshold 0.0031308 -> 0.040449936 * 255 = 10.3147 -> 10.
+    CHECK(toneMapSrgb8(0.001f, 0.002f, 0.0031308f, 0) == std::array<uint8_t, 3>{3, 7, 10});
+    // Rounding at the middle: sRGB 0.5 is linear ((0.5 + 0.055) / 1.055)^2.4 = 0.2140411,
+    // i.e. 127.5 exactly; 0.2140 -> 0.4999555 * 255 = 127.489 -> 127 and
+    // 0.2141 -> 1.055 * 0.2141^(1/2.4) - 0.055 = 0.5000563; * 255 = 127.514 -> 128.
+    CHECK(toneMapSrgb8(0.2140f, 0.2141f, 0.f, 0)[0] == 127);
+    CHECK(toneMapSrgb8(0.2140f, 0.2141f, 0.f, 0)[1] == 128);
+}
+
+TEST_CASE("png: exposure, clamping and non-finite input") {
+    // Exposure scales by 2^e before the curve: 0.25 * 2 = 0.5 -> 188, 1 * 2^-1 -> 188,
+    // 0.125 * 4 -> 188.
+    CHECK(toneMapSrgb8(0.25f, 1.f, 0.125f, 0)[0] == 137);
+    CHECK(toneMapSrgb8(0.25f, 0.25f, 0.25f, 1) == grey(188));
+    CHECK(toneMapSrgb8(1.f, 1.f, 1.f, -1) == grey(188));
+    CHECK(toneMapSrgb8(0.125f, 0.125f, 0.125f, 2) == grey(188));
+    // Over-range clamps to white, negative to black.
+    CHECK(toneMapSrgb8(2.f, 1e30f, 1.0001f, 0) == grey(255));
+    CHECK(toneMapSrgb8(0.6f, 0.6f, 0.6f, 1) == grey(255));
+    CHECK(toneMapSrgb8(-1.f, -0.f, -1e-30f, 0) == grey(0));
+    // Non-finite -> 0; also a finite value that overflows after scaling.
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    CHECK(toneMapSrgb8(nan, inf, -inf, 0) == grey(0));
+    CHECK(toneMapSrgb8(3e38f, 0.5f, 0.5f, 1e4)[0] == 0);
+}
+
+TEST_CASE("png: file has the PNG signature, IHDR size and the tone-mapped pixels") {
+    TempDir dir;
+    const std::string path = dir.file("img.png");
+    Film film(3, 2);
+    const float values[6][3] = {{0, 0, 0},         {1, 1, 1},   {0.5f, 0.18f, 0.25f},
+                                {0.001f, 2.f, -1}, {0.01f, 0, 0}, {0.2141f, 0.214f, 1}};
+    for (int i = 0; i < 6; ++i)
+        for (int c = 0; c < 3; ++c) film.rgba[4 * i + c] = values[i][c];
+    writePng(path, film);
+    CHECK(dir.entries() == std::vector<std::string>{"img.png"});
+
+    const std::string bytes = readBytes(path);
+    REQUIRE(bytes.size() > 33);
+    CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+    // First chunk: length 13, "IHDR", width, height (big-endian), depth 8, colour type 2 (RGB).
+    CHECK(bigEndian32(bytes, 8) == 13);
+    CHECK(bytes.compare(12, 4, "IHDR") == 0);
+    CHECK(bigEndian32(bytes, 16) == 3);
+    CHECK(bigEndian32(bytes, 20) == 2);
+    CHECK(uint8_t(bytes[24]) == 8);
+    CHECK(uint8_t(bytes[25]) == 2);
+
+    // Decode and compare with hand-computed bytes, row 0 first (top of the image).
+    png_image image;
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, path.c_str()));
+    image.format = PNG_FORMAT_RGB;
+    std::vector<uint8_t> px(PNG_IMAGE_SIZE(image));
+    REQUIRE(png_image_finish_read(&image, nullptr, px.data(), 0, nullptr));
+    const std::vector<uint8_t> expected = {0,  0,   0,   255, 255, 255, 188, 118, 137,
+                                           3,  255, 0,   25,  0,   0,   128, 127, 255};
+    CHECK(px == expected);
+}
+
+TEST_CASE("png: exposure is applied in the file; errors are InputErrors") {
+    TempDir dir;
+    Film film(1, 1);
+    film.rgba = {0.25f, 0.5f, 1.f, 1.f};
+    writePng(dir.file("e.png"), film, 1.0);  // -> 0.5, 1, 2 -> 188, 255, 255
+    png_image image;
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, dir.file("e.png").c_str()));
+    image.format = PNG_FORMAT_RGB;
+    uint8_t px[3] = {};
+    REQUIRE(png_image_finish_read(&image, nullptr, px, 0, nullptr));
+    CHECK(px[0] == 188);
+    CHECK(px[1] == 255);
+    CHECK(px[2] == 255);
+
+    const std::string bad = dir.file("missing/dir.png");
+    try {
+        writePng(bad, film);
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == bad);
+    }
+    CHECK_THROWS_AS(writePng(dir.file("empty.png"), Film()), InputError);
+    CHECK(dir.entries() == std::vector<std::string>{"e.png"});
+}

@@ -1,0 +1,87 @@
+// The shading terms and the optics of reflection and refraction, against
+// hand-computed values.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "shading/brdf.h"
+#include "shading/optics.h"
+
+using namespace raylab;
+
+TEST_CASE("lambert: kd * I * max(0, N.L)") {
+    const Vec3 n{0, 0, 1};
+    // L at 60° from N: cos = 0.5, so 0.8 * 2 * 0.5 = 0.8.
+    const Vec3 l = normalize(Vec3{std::sqrt(3.0), 0, 1});
+    const Color c = lambert(Color(0.8), Color(2.0), n, l);
+    CHECK(c.r == doctest::Approx(0.8));
+    // A light below the surface contributes nothing.
+    CHECK(lambert(Color(0.8), Color(2.0), n, Vec3{0, 0, -1}).isBlack());
+}
+
+TEST_CASE("blinn-phong: ks * I * max(0, N.H)^s") {
+    const Vec3 n{0, 0, 1};
+    // Mirror configuration: H = N, so the term is ks * I.
+    const Vec3 l = normalize(Vec3{1, 0, 1}), v = normalize(Vec3{-1, 0, 1});
+    CHECK(blinnPhong(Color(0.5), 100, Color(1), n, l, v).r == doctest::Approx(0.5));
+    // L = N and V at 90° from N: H at 45°, N.H = cos 45° = 1/sqrt(2); ^2 = 0.5.
+    const Color c = blinnPhong(Color(1), 2, Color(1), n, Vec3{0, 0, 1}, Vec3{1, 0, 0});
+    CHECK(c.r == doctest::Approx(0.5));
+}
+
+TEST_CASE("reflect: mirror direction about the normal") {
+    const Vec3 r = reflect(normalize(Vec3{1, -1, 0}), {0, 1, 0});
+    CHECK(r.x == doctest::Approx(std::sqrt(0.5)));
+    CHECK(r.y == doctest::Approx(std::sqrt(0.5)));
+    CHECK(r.z == 0);
+}
+
+TEST_CASE("refract: Snell's law") {
+    const Vec3 n{0, 1, 0};
+    // 45° incidence from air into glass 1.5: sin t = sin 45° / 1.5 = 0.4714.
+    const Vec3 d = normalize(Vec3{1, -1, 0});
+    const auto t = refract(d, n, 1.0, 1.5);
+    REQUIRE(t);
+    CHECK(t->x == doctest::Approx(std::sqrt(0.5) / 1.5));
+    CHECK(t->y == doctest::Approx(-std::sqrt(1 - 0.5 / 2.25)));
+    CHECK(length(*t) == doctest::Approx(1.0));
+    // Normal incidence passes straight through.
+    const auto s = refract(Vec3{0, -1, 0}, n, 1.0, 1.5);
+    REQUIRE(s);
+    CHECK(s->y == doctest::Approx(-1.0));
+}
+
+TEST_CASE("refract: ior 1 leaves the direction unchanged") {
+    const Vec3 d = normalize(Vec3{0.3, -0.8, 0.2});
+    const auto t = refract(d, {0, 1, 0}, 1.0, 1.0);
+    REQUIRE(t);
+    CHECK(t->x == doctest::Approx(d.x).epsilon(1e-15));
+    CHECK(t->y == doctest::Approx(d.y).epsilon(1e-15));
+    CHECK(t->z == doctest::Approx(d.z).epsilon(1e-15));
+}
+
+TEST_CASE("refract: total internal reflection at and beyond the critical angle") {
+    // Glass (1.5) to air: critical angle asin(1/1.5) = 41.81°.
+    const double critical = std::asin(1.0 / 1.5);
+    const Vec3 n{0, 1, 0};  // on the incoming (glass) side
+    auto dirAt = [](double theta) { return Vec3{std::sin(theta), -std::cos(theta), 0}; };
+    // Just below: refracts, nearly grazing.
+    const auto below = refract(dirAt(critical - 1e-7), n, 1.5, 1.0);
+    REQUIRE(below);
+    CHECK(isFinite(*below));
+    CHECK(below->x > 0.999);
+    // Just beyond: total internal reflection.
+    CHECK_FALSE(refract(dirAt(critical + 1e-7), n, 1.5, 1.0));
+    CHECK_FALSE(refract(dirAt(1.2), n, 1.5, 1.0));
+    // Exactly at the critical angle (to double rounding): finite, never NaN.
+    const auto at = refract(dirAt(critical), n, 1.5, 1.0);
+    if (at) CHECK(isFinite(*at));
+}
+
+TEST_CASE("fresnel: normal incidence and TIR") {
+    // ((1.5 - 1) / (1.5 + 1))^2 = 0.04
+    CHECK(fresnelDielectric(1.0, 1.0, 1.5) == doctest::Approx(0.04));
+    CHECK(fresnelDielectric(1.0, 1.5, 1.0) == doctest::Approx(0.04));
+    CHECK(fresnelDielectric(0.1, 1.5, 1.0) == 1.0);   // beyond critical: TIR
+    CHECK(fresnelDielectric(0.0, 1.0, 1.5) == doctest::Approx(1.0));  // grazing
+}
