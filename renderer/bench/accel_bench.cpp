@@ -51,7 +51,7 @@ const char* const kBenchAccelHelp =
     "  --runs N                timed runs per measurement, median reported (default 5)\n"
     "  --threads N             worker threads (default: all cores)\n"
     "  --naive-budget S        longest naive frame in seconds before pixel sampling (default 2)\n"
-    "  -o, --output FILE       also write the results as CSV (.csv) or JSON (.json)\n"
+    "  --out FILE              also write the results as CSV (.csv) or JSON (.json)\n"
     "  --plot FILE.svg         log-log plot: time per ray against primitive count, both back ends\n"
     "  --quick                 smoke run of about 20 s: small sizes, at most 128x128, 3 runs,\n"
     "                          0.5 s naive budget\n";
@@ -173,7 +173,8 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
 
     // Embree: full frames through the renderer, after one warm-up frame.
     {
-        const auto accel = buildAccelerator("embree", scene, options, s.runs, row.embree.buildSeconds);
+        const auto accel =
+            buildAccelerator("embree", scene, options, s.runs, row.embree.buildSeconds);
         render(scene, *accel, options, effects);
         std::vector<double> times;
         for (int r = 0; r < s.runs; ++r) {
@@ -188,7 +189,8 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
     // Naive: a pilot sample sized from a guess of 10 ns per primitive per ray
     // estimates the full frame; over budget, every k-th pixel only.
     {
-        const auto accel = buildAccelerator("naive", scene, options, s.runs, row.naive.buildSeconds);
+        const auto accel =
+            buildAccelerator("naive", scene, options, s.runs, row.naive.buildSeconds);
         const double raysPerPixel = double(row.embree.rays) / double(pixels);
         const double guessPerPixel = 10e-9 * double(std::max<uint64_t>(1, row.primitives)) *
                                      raysPerPixel;
@@ -232,10 +234,10 @@ std::string formatMs(double seconds) {
     return buf;
 }
 
+/// Three significant digits: 12.3, 0.0559, 6.4e-05 (naive rates span 8 decades).
 std::string formatMrays(double raysPerSecond) {
     char buf[32];
-    const double m = raysPerSecond * 1e-6;
-    std::snprintf(buf, sizeof buf, m < 0.1 ? "%.4f" : (m < 10 ? "%.3f" : "%.2f"), m);
+    std::snprintf(buf, sizeof buf, "%.3g", raysPerSecond * 1e-6);
     return buf;
 }
 
@@ -245,9 +247,10 @@ std::string sampleText(const Timing& t) {
 
 void printHeader(std::ostream& out) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%-12s %-14s %9s | %10s %10s %9s %9s | %10s %10s %9s %9s %7s | %9s\n",
-                  "family", "scene", "prims", "build ms", "frame ms", "Mrays/s", "ns/ray",
-                  "build ms", "frame ms", "Mrays/s", "ns/ray", "pixels", "speedup");
+    std::snprintf(buf, sizeof buf,
+                  "%-12s %-14s %9s | %10s %10s %9s %9s | %10s %10s %9s %9s %7s | %9s\n", "family",
+                  "scene", "prims", "build ms", "frame ms", "Mrays/s", "ns/ray", "build ms",
+                  "frame ms", "Mrays/s", "ns/ray", "pixels", "speedup");
     out << "                                     | ----------------- embree ----------------- |"
            " ------------------------ naive ------------------------ |\n";
     out << buf;
@@ -293,7 +296,8 @@ Crossover findCrossover(const std::string& family, std::vector<const Row*> rows)
         c.text = buf;
     } else if (j == rows.size()) {
         char buf[160];
-        std::snprintf(buf, sizeof buf, "naive faster at every size measured (up to %llu primitives)",
+        std::snprintf(buf, sizeof buf,
+                      "naive faster at every size measured (up to %llu primitives)",
                       (unsigned long long)rows.back()->primitives);
         c.text = buf;
     } else {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <thread>
 
+#include <time.h>
+
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -32,6 +34,12 @@ int logicalCores() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 int effectiveThreads(int threads) {
     return threads > 0 ? threads : std::max(1, tbb::info::default_concurrency());
+}
+
+double threadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 double median(std::vector<double> v) {

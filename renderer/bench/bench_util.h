@@ -16,6 +16,11 @@ int logicalCores();
 /// Threads a TBB loop gets for a `threads` setting (0 = all cores).
 int effectiveThreads(int threads);
 
+/// CPU seconds consumed so far by the calling thread (CLOCK_THREAD_CPUTIME_ID).
+/// Unlike wall-clock time it does not count time the thread spent waiting for
+/// a core, so one-thread timings stay meaningful on a shared machine.
+double threadCpuSeconds();
+
 /// Median of the values (mean of the middle two for an even count); 0 when empty.
 double median(std::vector<double> values);
 

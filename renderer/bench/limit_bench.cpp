@@ -41,8 +41,9 @@ const char* const kBenchLimitHelp =
     "  --width W, --height H   image size (default: the scene's; 512x512 with --spd)\n"
     "  --spd                   Haines' SPD procedure: 513x513 corner rays, depth 5\n"
     "  --runs N                timed runs of each measurement, median reported (default 5)\n"
-    "  --threads N             threads of the render and of the replays (default 1; 0 = all cores)\n"
-    "  -o, --output FILE       also write the results as CSV (.csv) or JSON (.json)\n";
+    "  --threads N             threads of the render and of the replays (default 1;\n"
+    "                          0 = all cores)\n"
+    "  --out FILE              also write the results as CSV (.csv) or JSON (.json)\n";
 
 namespace {
 
@@ -52,17 +53,43 @@ double secondsSince(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+/// The clock of the timed phases: with one thread (TBB then runs everything
+/// on the calling thread) that thread's CPU time, which a busy shared machine
+/// does not inflate; with more threads, wall-clock time.
+class PhaseClock {
+public:
+    explicit PhaseClock(bool cpu) : m_cpu(cpu) {}
+    /// Seconds `phase()` takes on this clock.
+    template <class F>
+    double time(F&& phase) const {
+        if (m_cpu) {
+            const double t0 = threadCpuSeconds();
+            phase();
+            return threadCpuSeconds() - t0;
+        }
+        const auto t0 = Clock::now();
+        phase();
+        return secondsSince(t0);
+    }
+    const char* name() const {
+        return m_cpu ? "CPU time of the one working thread" : "wall-clock time";
+    }
+
+private:
+    bool m_cpu;
+};
+
 /// Replays the rays through the Accelerator interface (what the integrator
-/// calls: conversion, query, decoding), with the same threading as EmbreeReplay.
-double replayThroughInterface(const Accelerator& accel, const std::vector<RecordedRay>& rays,
-                              int threads, uint64_t& disagreements) {
+/// calls: conversion, query, decoding), with the same threading as
+/// EmbreeReplay; counts answers that differ from the recorded ones.
+void replayThroughInterface(const Accelerator& accel, const std::vector<RecordedRay>& rays,
+                            int threads, uint64_t& disagreements) {
     std::vector<uint8_t> results(rays.size(), 0);
     const auto one = [&](size_t i) {
         const RecordedRay& r = rays[i];
         results[i] = r.occlusion ? accel.occluded(r.ray, r.tMin, r.tMax)
                                  : accel.intersect(r.ray, r.tMin, r.tMax).has_value();
     };
-    const auto t0 = Clock::now();
     if (threads == 1) {
         for (size_t i = 0; i < rays.size(); ++i) one(i);
     } else {
@@ -75,10 +102,8 @@ double replayThroughInterface(const Accelerator& accel, const std::vector<Record
                               for (size_t i = range.begin(); i != range.end(); ++i) one(i);
                           });
     }
-    const double seconds = secondsSince(t0);
     disagreements = 0;
     for (size_t i = 0; i < rays.size(); ++i) disagreements += results[i] != uint8_t(rays[i].hit);
-    return seconds;
 }
 
 bool sameCounters(const RayCounters& a, const RayCounters& b) {
@@ -102,6 +127,7 @@ struct LimitResult {
     double renderSeconds = 0, interfaceSeconds = 0, bareSeconds = 0;
     uint64_t bareDisagreements = 0, interfaceDisagreements = 0;
     bool countersMatch = false;
+    bool cpuClock = false;  ///< times are the working thread's CPU time (one thread)
 
     double rate(double seconds) const { return seconds > 0 ? double(rays) / seconds : 0; }
     double fraction() const { return bareSeconds > 0 ? bareSeconds / renderSeconds : 0; }
@@ -112,7 +138,7 @@ std::string csvDocument(const LimitResult& r, const std::string& cpu) {
         "scene,width,height,spd,threads,runs,primitives,build_s,rays,camera_rays,shadow_rays,"
         "reflection_rays,refraction_rays,render_s,render_mrays_per_s,interface_replay_s,"
         "interface_mrays_per_s,bare_replay_s,bare_mrays_per_s,renderer_fraction_of_bare,"
-        "bar_met,cpu,cores\n";
+        "bar_met,clock,cpu,cores\n";
     t += csvField(r.scene) + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," +
          (r.spd ? "true" : "false") + "," + std::to_string(r.threads) + "," +
          std::to_string(r.runs) + "," + std::to_string(r.primitives) + "," +
@@ -125,7 +151,7 @@ std::string csvDocument(const LimitResult& r, const std::string& cpu) {
          jsonNumber(r.interfaceSeconds) + "," + jsonNumber(r.rate(r.interfaceSeconds) * 1e-6) +
          "," + jsonNumber(r.bareSeconds) + "," + jsonNumber(r.rate(r.bareSeconds) * 1e-6) + "," +
          jsonNumber(r.fraction()) + "," + (r.fraction() >= kLimitBenchBar ? "true" : "false") +
-         "," + csvField(cpu) + "," + std::to_string(logicalCores()) + "\n";
+         "," + (r.cpuClock ? "thread_cpu" : "wall") + "," + csvField(cpu) + "," + std::to_string(logicalCores()) + "\n";
     return t;
 }
 
@@ -142,6 +168,7 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
                     ",\n  \"spd\": " + (r.spd ? "true" : "false") +
                     ",\n  \"threads\": " + std::to_string(r.threads) +
                     ",\n  \"runs\": " + std::to_string(r.runs) +
+                    ",\n  \"clock\": " + (r.cpuClock ? "\"thread_cpu\"" : "\"wall\"") +
                     ",\n  \"primitives\": " + std::to_string(r.primitives) +
                     ",\n  \"build_seconds\": " + jsonNumber(r.buildSeconds) +
                     ",\n  \"rays\": {\"total\": " + std::to_string(r.rays) +
@@ -207,7 +234,8 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
         << renderOptions.spp << ", depth " << renderOptions.maxDepth << ", " << r.primitives
         << " primitives, Embree device + build " << fixed(r.buildSeconds * 1e3, 1) << " ms\n"
         << "  machine: " << cpu << ", " << logicalCores() << " logical cores; threads: "
-        << r.threads << "; median of " << r.runs << " runs\n"
+        << r.threads << "; median of " << r.runs << " interleaved runs, "
+        << PhaseClock(r.threads == 1).name() << "\n"
         << std::flush;
 
     // 1. One recorded render: the exact rays of a frame, in deterministic order.
@@ -227,12 +255,14 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     replay.run(replayThreads);
     uint64_t disagreements = 0;
     replayThroughInterface(*accel, rays, replayThreads, disagreements);
+    r.cpuClock = r.threads == 1;
+    const PhaseClock clock(r.cpuClock);
     std::vector<double> renderTimes, bareTimes, interfaceTimes;
     for (int i = 0; i < options.runs; ++i) {
-        renderTimes.push_back(render(scene, *accel, renderOptions, effects).renderSeconds);
-        bareTimes.push_back(replay.run(replayThreads));
-        interfaceTimes.push_back(
-            replayThroughInterface(*accel, rays, replayThreads, disagreements));
+        renderTimes.push_back(clock.time([&] { render(scene, *accel, renderOptions, effects); }));
+        bareTimes.push_back(clock.time([&] { replay.run(replayThreads); }));
+        interfaceTimes.push_back(clock.time(
+            [&] { replayThroughInterface(*accel, rays, replayThreads, disagreements); }));
     }
     r.renderSeconds = median(renderTimes);
     r.bareSeconds = median(bareTimes);

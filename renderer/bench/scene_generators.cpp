@@ -303,17 +303,17 @@ Scene makePolygonFieldScene(size_t count, uint64_t seed) {
 }
 
 const std::vector<SceneGenerator>& benchSceneGenerators() {
-    // Default ladders: about a decade apart, up to where the Embree build
-    // stays well under a second on 2 cores; --quick stops where the naive
-    // loop still renders in a fraction of a second.
+    // Default ladders: a few tiny sizes (where the naive loop may win), then
+    // decades up to where the Embree build stays under a second on 2 cores;
+    // --quick stops where a naive frame still takes a fraction of a second.
     static const std::vector<SceneGenerator> generators = {
         {"sphereflake", "level", {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3},
          [](size_t p) { return makeSphereflakeScene(int(p)); }},
-        {"spheres", "N", {10, 100, 1000, 10000, 100000}, {10, 100, 1000},
+        {"spheres", "N", {1, 3, 10, 100, 1000, 10000, 100000}, {1, 10, 100, 1000},
          [](size_t p) { return makeRandomSpheresScene(p); }},
-        {"mesh", "triangles", {100, 1000, 10000, 100000, 1000000}, {100, 1000, 10000},
+        {"mesh", "triangles", {2, 8, 100, 1000, 10000, 100000, 1000000}, {2, 100, 1000, 10000},
          [](size_t p) { return makeHeightFieldScene(p); }},
-        {"polygons", "N", {10, 100, 1000, 10000}, {10, 100, 1000},
+        {"polygons", "N", {1, 3, 10, 100, 1000, 10000}, {1, 10, 100, 1000},
          [](size_t p) { return makePolygonFieldScene(p); }},
     };
     return generators;

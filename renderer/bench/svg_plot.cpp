@@ -140,7 +140,8 @@ private:
 /// SVG for one marker centred at (x, y).
 std::string marker(PlotMarker m, double x, double y, const std::string& color, bool filled) {
     const std::string fill = filled ? color : "white";
-    const std::string style = " fill=\"" + fill + "\" stroke=\"" + color + "\" stroke-width=\"1.5\"";
+    const std::string style =
+        " fill=\"" + fill + "\" stroke=\"" + color + "\" stroke-width=\"1.5\"";
     const double r = 4.0;
     switch (m) {
         case PlotMarker::Circle:

@@ -4,18 +4,30 @@
 // on one), with '#' comments to the end of a line.
 //
 // Mapping to raylab's model (SPD conventions, see docs/spd.md):
-//   f R G B Kd Ks Shine T ior  ->  kd = colour·Kd, ka = colour·Kd, ks = Ks (white),
+//   v from/at/up/angle/hither/resolution -> camera (angle = full vertical field
+//                                  of view between the outermost sample rows),
+//                                  cameraNear, image size (flags override it).
+//   f R G B Kd Ks Shine T ior  ->  kd = ka = colour·Kd, ks = Ks (white),
 //                                  shininess = Shine, km = Ks (a reflective
-//                                  surface spawns mirror rays), kt = T, ior.
+//                                  surface spawns mirror rays), kt = T, ior
+//                                  (only read when T > 0: SPD writes ior 0 for
+//                                  opaque surfaces).
 //   l X Y Z [R G B]            ->  point light; without a colour its intensity is
 //                                  sqrt(L)/(2L) for L lights, as is the ambient Ia.
 //   s, c (cone/cylinder, no caps), p (polygon), pp (patch with vertex normals):
 //   one-sided (outside visible), two-sided for transmitters, inside-visible for
-//   negative radii. Triangles (p 3, pp 3) go to one Embree triangle mesh;
-//   larger polygons to the analytic polygon primitive.
+//   negative radii. Triangles (p 3, pp 3) go to Embree triangle meshes; larger
+//   polygons to the analytic polygon primitive. Zero-area polygons are dropped
+//   (they can never be hit; tessellators emit them at poles).
+//
+// Error locations: a malformed token (not a number, NaN/Inf, out of range) is
+// reported on its own line; a wrong count of numbers or a truncated polygon on
+// the line where the entity starts, since in a token stream the mistake is only
+// noticed at the next entity's keyword.
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -23,6 +35,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
@@ -32,15 +45,33 @@ namespace raylab {
 namespace {
 
 /// Hard cap on vertices per polygon: SPD's largest have 144; anything near the
-/// cap is corrupt input, and the count is never used to preallocate.
+/// cap is corrupt input. Counts are also checked against the bytes left in the
+/// file before anything is reserved, so "p 2000000000" allocates nothing.
 constexpr long long kMaxPolygonVertices = 1 << 20;
 
+/// Same collinearity tolerance as Polygon::create: zero-area polygons are
+/// dropped here instead of being rejected there.
+constexpr double kCollinearTolerance = 1e-12;
+
+bool isKeyword(std::string_view t) {
+    // Sorted by frequency in the SPD files: s and p dominate.
+    return t == "s" || t == "p" || t == "pp" || t == "c" || t == "f" || t == "l" || t == "b" ||
+           t == "v" || t == "from" || t == "at" || t == "up" || t == "angle" || t == "hither" ||
+           t == "resolution";
+}
+
+std::string quoted(std::string_view t) {
+    // Long garbage (a binary blob, a run-on line) is shortened in messages.
+    if (t.size() > 40) return "'" + std::string(t.substr(0, 40)) + "...'";
+    return "'" + std::string(t) + "'";
+}
+
+/// Token stream over the whole file text, tracking line numbers.
 class Tokenizer {
 public:
-    Tokenizer(const std::string& text, std::string path)
-        : m_p(text.data()), m_end(text.data() + text.size()), m_path(std::move(path)) {}
+    Tokenizer(std::string_view text) : m_p(text.data()), m_end(text.data() + text.size()) {}
 
-    /// Next token, or an empty view at the end of the input.
+    /// Next token (its line in tokenLine()), or an empty view at the end of the input.
     std::string_view next() {
         skipSpace();
         const char* start = m_p;
@@ -49,61 +80,37 @@ public:
         return {start, size_t(m_p - start)};
     }
 
-    /// True when the next token starts like a number (without consuming it).
-    bool peekNumber() {
-        skipSpace();
-        if (m_p >= m_end) return false;
-        const char c = *m_p;
-        return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
-    }
-
-    double number(const char* what) {
+    /// The next token without consuming it.
+    std::string_view peek() {
+        const char* p = m_p;
+        const int line = m_line, tokenLine = m_tokenLine;
         const std::string_view t = next();
-        if (t.empty()) fail(std::string("unexpected end of file, expected ") + what);
-        double v = 0;
-        const char* first = t.data();
-        if (*first == '+') ++first;  // from_chars rejects a leading '+'
-        const auto [ptr, ec] = std::from_chars(first, t.data() + t.size(), v);
-        if (ec == std::errc::result_out_of_range)
-            fail(std::string(what) + ": number out of range '" + std::string(t) + "'");
-        if (ec != std::errc() || ptr != t.data() + t.size())
-            fail(std::string("expected a number for ") + what + ", got '" + std::string(t) + "'");
-        if (!std::isfinite(v)) fail(std::string(what) + ": number must be finite, got '" + std::string(t) + "'");
-        return v;
+        m_p = p;
+        m_line = line;
+        m_tokenLine = tokenLine;
+        return t;
     }
 
-    Vec3 vec3(const char* what) {
-        const double x = number(what), y = number(what), z = number(what);
-        return {x, y, z};
-    }
-
-    long long integer(const char* what) {
-        const double v = number(what);
-        if (v != std::floor(v) || std::abs(v) > 9e15)
-            fail(std::string(what) + ": expected an integer");
-        return (long long)v;
-    }
-
-    [[noreturn]] void fail(const std::string& message) const {
-        throw InputError(m_path, m_tokenLine, message);
-    }
-
-    int line() const { return m_tokenLine; }
+    int tokenLine() const { return m_tokenLine; }
     /// Bytes not yet read: bounds how many numbers can still follow.
     size_t remaining() const { return size_t(m_end - m_p); }
 
 private:
-    static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+    static bool isSpace(char c) {
+        return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+    }
 
     void skipSpace() {
         while (m_p < m_end) {
-            if (*m_p == '\n') {
+            const char c = *m_p;
+            if (c == '\n') {
                 ++m_line;
                 ++m_p;
-            } else if (isSpace(*m_p)) {
+            } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
                 ++m_p;
-            } else if (*m_p == '#') {
-                while (m_p < m_end && *m_p != '\n') ++m_p;
+            } else if (c == '#') {
+                const void* nl = std::memchr(m_p, '\n', size_t(m_end - m_p));
+                m_p = nl ? static_cast<const char*>(nl) : m_end;
             } else {
                 break;
             }
@@ -112,7 +119,6 @@ private:
 
     const char* m_p;
     const char* m_end;
-    std::string m_path;
     int m_line = 1;
     int m_tokenLine = 1;
 };
@@ -125,10 +131,11 @@ struct NffLight {
 
 class NffReader {
 public:
-    NffReader(const std::string& text, const std::string& path) : m_tok(text, path), m_path(path) {}
-
-    Scene read(const std::string& text) {
+    NffReader(std::string_view text, const std::string& path) : m_tok(text), m_path(path) {
         checkEncoding(text);
+    }
+
+    Scene read() {
         for (std::string_view t = m_tok.next(); !t.empty(); t = m_tok.next()) entity(t);
         return finish();
     }
@@ -136,73 +143,204 @@ public:
 private:
     /// NFF is ASCII: UTF-16 (a byte-order mark or NUL bytes) is refused with
     /// a clear message instead of a confusing token error.
-    void checkEncoding(const std::string& text) const {
-        const bool bom16 = text.size() >= 2 && ((uint8_t(text[0]) == 0xFF && uint8_t(text[1]) == 0xFE) ||
-                                                (uint8_t(text[0]) == 0xFE && uint8_t(text[1]) == 0xFF));
-        if (bom16 || text.find('\0') != std::string::npos)
+    void checkEncoding(std::string_view text) const {
+        const bool bom16 =
+            text.size() >= 2 && ((uint8_t(text[0]) == 0xFF && uint8_t(text[1]) == 0xFE) ||
+                                 (uint8_t(text[0]) == 0xFE && uint8_t(text[1]) == 0xFF));
+        if (bom16 || std::memchr(text.data(), '\0', text.size()) != nullptr)
             throw InputError(m_path, 1, "not a text file (UTF-16 or binary data); NFF must be ASCII");
     }
 
+    [[noreturn]] void failAt(int line, const std::string& message) const {
+        throw InputError(m_path, line, message);
+    }
+
+    /// Error about the entity being read, located at its first line.
+    [[noreturn]] void failEntity(const std::string& message) const {
+        failAt(m_entityLine, m_entity + ": " + message);
+    }
+
     void entity(std::string_view t) {
-        if (t == "v") return;  // the viewpoint keywords follow as their own entities
-        if (t == "from") { m_from = m_tok.vec3("from"); m_seen |= 1; return; }
-        if (t == "at") { m_at = m_tok.vec3("at"); m_seen |= 2; return; }
-        if (t == "up") { m_up = m_tok.vec3("up"); m_seen |= 4; return; }
-        if (t == "angle") { m_angle = m_tok.number("angle"); m_seen |= 8; return; }
+        const std::string_view previous = m_entity;
+        const int previousLine = m_entityLine;
+        m_entity = t;
+        m_entityLine = m_tok.tokenLine();
+        m_numbersRead = 0;
+        m_countPrefix.clear();
+        m_splitVertex = -1;
+        if (t == "s") return sphere();
+        if (t == "p") return polygon(false);
+        if (t == "pp") return polygon(true);
+        if (t == "c") return cone();
+        if (t == "f") return material();
+        if (t == "l") return light();
+        if (t == "b") {
+            m_expected = "3 numbers (R G B)";
+            m_background = color("background colour");
+            return;
+        }
+        if (t == "v") {
+            m_viewLine = m_entityLine;
+            return;  // the viewpoint keywords follow as their own entities
+        }
+        if (t == "from" || t == "at" || t == "up") {
+            m_expected = "3 numbers (x y z)";
+            const Vec3 p = vec3("x", "y", "z");
+            if (t == "from") m_from = p, m_seen |= kFrom;
+            if (t == "at") m_at = p, m_seen |= kAt;
+            if (t == "up") m_up = p, m_seen |= kUp;
+            return;
+        }
+        if (t == "angle") {
+            m_expected = "1 number (degrees)";
+            m_angle = number("field of view");
+            if (!(m_angle > 0 && m_angle < 180))
+                failEntity("field of view must be in (0, 180) degrees (got " +
+                           formatNumber(m_angle) + ")");
+            m_seen |= kAngle;
+            return;
+        }
         if (t == "hither") {
-            m_hither = m_tok.number("hither");
-            if (m_hither < 0) m_tok.fail("hither: must be >= 0");
+            m_expected = "1 number (distance)";
+            m_hither = number("distance");
+            if (m_hither < 0) failEntity("distance must be >= 0 (got " + formatNumber(m_hither) + ")");
             return;
         }
         if (t == "resolution") {
-            const long long w = m_tok.integer("resolution"), h = m_tok.integer("resolution");
+            m_expected = "2 integers (width height)";
+            const long long w = integer("width"), h = integer("height");
             if (w < 1 || h < 1 || w > 65536 || h > 65536)
-                m_tok.fail("resolution: expected two integers in [1, 65536], got " +
-                           std::to_string(w) + " " + std::to_string(h));
+                failEntity("expected two integers in [1, 65536], got " + std::to_string(w) + " " +
+                           std::to_string(h));
             m_width = int(w);
             m_height = int(h);
             return;
         }
-        if (t == "b") { m_background = color("background"); return; }
-        if (t == "l") { light(); return; }
-        if (t == "f") { material(); return; }
-        if (t == "s") { sphere(); return; }
-        if (t == "c") { cone(); return; }
-        if (t == "p") { polygon(false); return; }
-        if (t == "pp") { polygon(true); return; }
-        m_tok.fail("unknown entity '" + std::string(t.substr(0, 40)) + "'");
+        if (looksNumeric(t)) {
+            // A number where an entity should start: the previous entity had
+            // more numbers than it takes.
+            if (previous.empty())
+                failAt(m_tok.tokenLine(), "unexpected number " + quoted(t) + " before any entity");
+            failAt(m_tok.tokenLine(), "unexpected number " + quoted(t) + ": too many numbers for '" +
+                                          std::string(previous) + "' (line " +
+                                          std::to_string(previousLine) + ")");
+        }
+        failAt(m_tok.tokenLine(), "unknown entity " + quoted(t));
+    }
+
+    static bool looksNumeric(std::string_view t) {
+        const char c = t[0];
+        return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
+    }
+
+    static std::string formatNumber(double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.9g", v);
+        return buf;
+    }
+
+    /// The next number of the current entity; `what` names it in messages.
+    double number(const char* what) {
+        const std::string_view t = m_tok.next();
+        if (t.empty() || isKeyword(t)) {
+            // The entity ended early: a count problem, reported where it starts.
+            const std::string after = t.empty() ? std::string("the end of the file")
+                                                : "'" + std::string(t) + "' on line " +
+                                                      std::to_string(m_tok.tokenLine());
+            failEntity(m_countPrefix + "expected " + m_expected + ", got " +
+                       std::to_string(m_numbersRead) + " number" + (m_numbersRead == 1 ? "" : "s") +
+                       " before " + after + extraHint());
+        }
+        double v = 0;
+        const char* first = t.data();
+        const char* last = t.data() + t.size();
+        if (*first == '+' && t.size() > 1 && first[1] != '-') ++first;  // from_chars rejects '+'
+        const auto [ptr, ec] = std::from_chars(first, last, v);
+        const int line = m_tok.tokenLine();
+        if (ec == std::errc::result_out_of_range) {
+            // Underflow towards zero is harmless; overflow is not representable.
+            if (ptr == last && parsesAsTiny(t)) {
+                ++m_numbersRead;
+                return 0.0;
+            }
+            failAt(line, m_entity + ": " + what + " is out of range: " + quoted(t));
+        }
+        if (ec != std::errc() || ptr != last)
+            failAt(line, m_entity + ": expected a number for " + what + ", got " + quoted(t));
+        if (!std::isfinite(v))
+            failAt(line, m_entity + ": " + what + " must be a finite number, got " + quoted(t));
+        ++m_numbersRead;
+        return v;
+    }
+
+    /// True for an out-of-range literal whose exponent is negative (an underflow).
+    static bool parsesAsTiny(std::string_view t) {
+        const size_t e = t.find_first_of("eE");
+        return e != std::string_view::npos && e + 1 < t.size() && t[e + 1] == '-';
+    }
+
+    Vec3 vec3(const char* x, const char* y, const char* z) {
+        const double a = number(x), b = number(y), c = number(z);
+        return {a, b, c};
     }
 
     Color color(const char* what) {
-        const double r = m_tok.number(what), g = m_tok.number(what), b = m_tok.number(what);
+        const double r = number(what), g = number(what), b = number(what);
         return {r, g, b};
     }
 
+    long long integer(const char* what) {
+        const double v = number(what);
+        if (v != std::floor(v) || std::abs(v) > 9e15)
+            failAt(m_tok.tokenLine(),
+                   m_entity + ": " + what + " must be an integer, got " + formatNumber(v));
+        return (long long)v;
+    }
+
+    /// Polygons: names the first vertex whose numbers span two lines, the
+    /// likely place of a missing number when the polygon comes up short.
+    std::string extraHint() const {
+        if (m_splitVertex < 0) return "";
+        return " (vertex " + std::to_string(m_splitVertex + 1) + " starts on line " +
+               std::to_string(m_splitLine) + " and continues on the next line: a number missing there?)";
+    }
+
     void light() {
+        m_expected = "3 or 6 numbers (x y z [R G B])";
         NffLight l;
-        l.position = m_tok.vec3("light position");
-        if (m_tok.peekNumber()) {
+        l.position = vec3("light x", "light y", "light z");
+        const std::string_view t = m_tok.peek();
+        if (!t.empty() && !isKeyword(t)) {
             l.hasColor = true;
             l.color = color("light colour");
+            if (l.color.r < 0 || l.color.g < 0 || l.color.b < 0)
+                failEntity("light colour must be >= 0");
         }
         m_lights.push_back(l);
     }
 
     void material() {
+        m_expected = "9 numbers (R G B Kd Ks Shine T ior)";
+        const Color c = color("colour");
+        const double kd = number("Kd"), ks = number("Ks");
+        const double shine = number("Shine"), t = number("T");
+        const double ior = number("index of refraction");
+        if (c.r < 0 || c.g < 0 || c.b < 0) failEntity("colour must be >= 0");
+        if (kd < 0 || ks < 0 || t < 0) failEntity("Kd, Ks and T must be >= 0");
+        if (shine < 0) failEntity("Shine must be >= 0 (got " + formatNumber(shine) + ")");
+        // SPD writes ior 0 for opaque materials: the index only matters when T > 0.
+        if (t > 0 && !(ior > 0))
+            failEntity("index of refraction must be > 0 when T > 0 (got " + formatNumber(ior) + ")");
         Material m;
-        const Color c = color("material colour");
-        const double kd = m_tok.number("Kd"), ks = m_tok.number("Ks");
-        const double shine = m_tok.number("Shine"), t = m_tok.number("T");
-        const double ior = m_tok.number("index of refraction");
-        if (ior <= 0) m_tok.fail("index of refraction must be > 0");
-        m.name = "nff_f" + std::to_string(m_materials.size()) + "_line" + std::to_string(m_tok.line());
+        m.name = "nff_f" + std::to_string(m_materials.size()) + "_line" +
+                 std::to_string(m_entityLine);
         m.kd = c * kd;
         m.ka = c * kd;
         m.ks = Color(ks);
         m.shininess = shine;
         m.km = Color(ks);
         m.kt = Color(t);
-        m.ior = ior;
+        m.ior = t > 0 ? ior : 1.0;
         m_materials.push_back(m);
     }
 
@@ -217,93 +355,140 @@ private:
         return uint32_t(m_materials.size() - 1);
     }
 
-    Sidedness sides(bool negativeRadius) {
-        if (m_materials.empty() ? false : m_materials.back().transmissive()) return Sidedness::Both;
-        return negativeRadius ? Sidedness::Inside : Sidedness::Outside;
+    /// Transmitters are two-sided (rays leave them from the inside); other
+    /// objects show their outside, or their inside for negative radii.
+    Sidedness sides(bool insideVisible) {
+        const uint32_t m = currentMaterial();
+        if (m_materials[m].transmissive()) return Sidedness::Both;
+        return insideVisible ? Sidedness::Inside : Sidedness::Outside;
     }
 
-    void addShape(std::unique_ptr<Shape> shape, Sidedness s, const char* kind, int line) {
+    template <class F>
+    std::unique_ptr<Shape> make(F&& f) {
+        try {
+            return f();
+        } catch (const std::invalid_argument& e) {
+            failAt(m_entityLine, e.what());
+        }
+    }
+
+    void addShape(std::unique_ptr<Shape> shape, Sidedness s, const char* kind) {
         Object o;
         shape->setSidedness(s);
         o.shape = std::move(shape);
         o.material = currentMaterial();
-        o.name = std::string(kind) + "@" + std::to_string(line);
+        o.name = std::string(kind) + "@" + std::to_string(m_entityLine);
         m_objects.push_back(std::move(o));
     }
 
-    template <class F>
-    auto make(F&& f, int line) {
-        try {
-            return f();
-        } catch (const std::invalid_argument& e) {
-            throw InputError(m_path, line, e.what());
-        }
-    }
-
     void sphere() {
-        const int line = m_tok.line();
-        const Vec3 c = m_tok.vec3("sphere centre");
-        const double r = m_tok.number("sphere radius");
+        m_expected = "4 numbers (x y z radius)";
+        const Vec3 c = vec3("centre x", "centre y", "centre z");
+        const double r = number("radius");
         const Sidedness s = sides(r < 0);
-        currentMaterial();
-        addShape(make([&] { return makeSphere(c, std::abs(r)); }, line), s, "sphere", line);
+        addShape(make([&] { return makeSphere(c, std::abs(r)); }), s, "sphere");
     }
 
     void cone() {
-        const int line = m_tok.line();
+        m_expected = "8 numbers (base x y z radius, apex x y z radius)";
         ConeParams p;
-        p.base = m_tok.vec3("cone base");
-        p.baseRadius = m_tok.number("cone base radius");
-        p.apex = m_tok.vec3("cone apex");
-        p.apexRadius = m_tok.number("cone apex radius");
+        p.base = vec3("base x", "base y", "base z");
+        p.baseRadius = number("base radius");
+        p.apex = vec3("apex x", "apex y", "apex z");
+        p.apexRadius = number("apex radius");
+        // Negative radii mark an inside-visible cone; a radius of 0 (a pointed
+        // cone) goes with either sign, a negative and a positive one do not.
+        if ((p.baseRadius < 0 && p.apexRadius > 0) || (p.baseRadius > 0 && p.apexRadius < 0))
+            failEntity("radii must not have opposite signs (got " + formatNumber(p.baseRadius) +
+                       " and " + formatNumber(p.apexRadius) + ")");
         const bool inside = p.baseRadius < 0 || p.apexRadius < 0;
         p.baseRadius = std::abs(p.baseRadius);
         p.apexRadius = std::abs(p.apexRadius);
         p.capped = false;  // NFF cones have no end caps
         const Sidedness s = sides(inside);
-        currentMaterial();
-        addShape(make([&] { return makeCone(p); }, line), s, "cone", line);
+        addShape(make([&] { return makeCone(p); }), s, "cone");
     }
 
     void polygon(bool patch) {
-        const int line = m_tok.line();
-        const char* what = patch ? "pp vertex count" : "p vertex count";
-        const long long n = m_tok.integer(what);
-        // Each vertex needs at least 3 (or 6) numbers of 2 bytes: a count the
-        // rest of the file cannot hold is refused before anything is stored.
-        const long long minBytes = n * (patch ? 12 : 6) - 1;
-        if (n < 3 || n > kMaxPolygonVertices || size_t(minBytes) > m_tok.remaining() + 1)
-            m_tok.fail(std::string(patch ? "pp" : "p") + ": vertex count " + std::to_string(n) +
-                       (n < 3 ? " is below 3" : " exceeds what the file holds"));
-        std::vector<Vec3> v, nrm;
-        v.reserve(size_t(n));
-        if (patch) nrm.reserve(size_t(n));
+        const char* name = patch ? "pp" : "p";
+        m_expected = "a vertex count";
+        const long long n = integer("vertex count");
+        if (n < 3) failEntity("vertex count must be >= 3 (got " + std::to_string(n) + ")");
+        // Each vertex needs at least 3 (or 6) one-digit numbers and their
+        // separators: a count the rest of the file cannot hold is refused
+        // before anything is reserved.
+        const unsigned long long minBytes = (unsigned long long)n * (patch ? 12 : 6) - 1;
+        if (n > kMaxPolygonVertices || minBytes > m_tok.remaining())
+            failEntity("vertex count " + std::to_string(n) +
+                       (n > kMaxPolygonVertices
+                            ? " exceeds the limit of " + std::to_string(kMaxPolygonVertices)
+                            : std::string(" is more than the rest of the file can hold")));
+        m_expected = std::to_string(n) + (patch ? " vertices of 6 numbers (x y z nx ny nz)"
+                                                : " vertices of 3 numbers (x y z)");
+        m_vertices.clear();
+        m_normals.clear();
+        m_numbersRead = 0;
+        m_countPrefix = "truncated polygon: ";
+        m_splitVertex = -1;
         for (long long i = 0; i < n; ++i) {
-            v.push_back(m_tok.vec3(patch ? "pp vertex" : "p vertex"));
-            if (patch) nrm.push_back(m_tok.vec3("pp vertex normal"));
+            const double x = number("vertex x");
+            const int firstLine = m_tok.tokenLine();
+            const double y = number("vertex y"), z = number("vertex z");
+            m_vertices.push_back({x, y, z});
+            if (patch) {
+                const Vec3 nv = vec3("normal x", "normal y", "normal z");
+                if (!(lengthSquared(nv) > 0))
+                    failAt(m_tok.tokenLine(), std::string(name) + ": normal of vertex " +
+                                                  std::to_string(i + 1) + " is zero");
+                m_normals.push_back(nv);
+            }
+            if (m_splitVertex < 0 && m_tok.tokenLine() != firstLine) {
+                m_splitVertex = int(i);
+                m_splitLine = firstLine;
+            }
         }
+        m_splitVertex = -1;
         const uint32_t mat = currentMaterial();
+        if (isDegenerate(m_vertices)) return;
         if (n == 3) {
-            addTriangle(v, nrm, mat);
+            addTriangle(mat, patch);
             return;
         }
         PolygonParams p;
-        p.vertices = std::move(v);
-        p.normals = std::move(nrm);
-        addShape(make([&] { return makePolygon(p); }, line), sides(false),
-                 patch ? "patch" : "polygon", line);
+        p.vertices = m_vertices;
+        p.normals = m_normals;
+        addShape(make([&] { return makePolygon(p); }), sides(false), patch ? "patch" : "polygon");
     }
 
-    /// Triangles gather into one mesh (Embree's native triangles); zero-area
-    /// ones are dropped, as they can never be hit.
-    void addTriangle(const std::vector<Vec3>& v, const std::vector<Vec3>& n, uint32_t material) {
-        if (!(lengthSquared(cross(v[1] - v[0], v[2] - v[0])) > 0)) return;
-        TriangleMesh& m = n.empty() ? m_flat : m_smooth;
-        std::vector<uint32_t>& mats = n.empty() ? m_flatMaterials : m_smoothMaterials;
+    /// Zero-area polygons (collinear or repeated vertices) can never be hit;
+    /// the test mirrors Polygon::create's, which would reject them.
+    static bool isDegenerate(const std::vector<Vec3>& v) {
+        Bounds3 box;
+        Vec3 centroid{};
+        for (const Vec3& p : v) {
+            box.expand(p);
+            centroid += p;
+        }
+        centroid = centroid / double(v.size());
+        const double diagonal = length(box.extent());
+        const double tolerance = kCollinearTolerance * diagonal * diagonal;
+        if (!(diagonal > 0)) return true;
+        if (length(newellNormal(v)) > tolerance) return false;
+        for (size_t i = 0; i < v.size(); ++i) {
+            const Vec3 c = cross(v[i] - centroid, v[(i + 1) % v.size()] - centroid);
+            if (length(c) > tolerance) return false;
+        }
+        return true;
+    }
+
+    /// Triangles gather into one mesh per kind (flat or smooth).
+    void addTriangle(uint32_t material, bool patch) {
+        TriangleMesh& m = patch ? m_smooth : m_flat;
+        std::vector<uint32_t>& mats = patch ? m_smoothMaterials : m_flatMaterials;
         const uint32_t base = uint32_t(m.positions.size());
         for (int i = 0; i < 3; ++i) {
-            m.positions.push_back(v[i]);
-            if (!n.empty()) m.normals.push_back(normalize(n[i]));
+            m.positions.push_back(m_vertices[i]);
+            if (patch) m.normals.push_back(normalize(m_normals[i]));
         }
         m.triangles.push_back({base, base + 1, base + 2});
         mats.push_back(material);
@@ -314,21 +499,28 @@ private:
         Object o;
         o.name = name;
         o.material = materials.front();
-        o.faceMaterials = std::move(materials);
+        // One material for all faces needs no per-face table.
+        bool uniform = true;
+        for (uint32_t m : materials) uniform = uniform && m == o.material;
+        if (!uniform) o.faceMaterials = std::move(materials);
         o.mesh = std::make_shared<TriangleMesh>(std::move(mesh));
         m_objects.push_back(std::move(o));
     }
 
     Scene finish() {
-        if ((m_seen & 15) != 15)
-            throw InputError(m_path, 0,
-                             "viewpoint incomplete: 'v' needs from, at, up and angle");
+        if ((m_seen & kAll) != kAll) {
+            std::string missing;
+            const char* names[] = {"from", "at", "up", "angle"};
+            for (int i = 0; i < 4; ++i)
+                if (!(m_seen & (1u << i))) missing += std::string(missing.empty() ? "" : ", ") + names[i];
+            failAt(m_viewLine, "viewpoint incomplete: missing " + missing);
+        }
         Scene s;
         s.sourcePath = m_path;
         try {
             s.camera = Camera::perspective(m_from, m_at, m_up, m_angle);
         } catch (const std::invalid_argument& e) {
-            throw InputError(m_path, 0, e.what());
+            failAt(m_viewLine, e.what());
         }
         s.cameraNear = m_hither;
         s.image.width = m_width;
@@ -354,8 +546,17 @@ private:
         return s;
     }
 
+    static constexpr unsigned kFrom = 1, kAt = 2, kUp = 4, kAngle = 8, kAll = 15;
+
     Tokenizer m_tok;
     std::string m_path;
+    std::string m_entity;         ///< keyword of the entity being read
+    int m_entityLine = 0;         ///< line where it starts
+    std::string m_expected;       ///< what it takes, for count errors
+    std::string m_countPrefix;    ///< prefix of count errors ("truncated polygon: ")
+    size_t m_numbersRead = 0;     ///< numbers read for it so far
+    int m_splitVertex = -1, m_splitLine = 0;
+    int m_viewLine = 0;
     Vec3 m_from{0, 0, 0}, m_at{0, 0, -1}, m_up{0, 1, 0};
     double m_angle = 45, m_hither = 0;
     unsigned m_seen = 0;
@@ -364,6 +565,7 @@ private:
     std::vector<NffLight> m_lights;
     std::vector<Material> m_materials;
     std::vector<Object> m_objects;
+    std::vector<Vec3> m_vertices, m_normals;  ///< reused per polygon
     TriangleMesh m_flat, m_smooth;
     std::vector<uint32_t> m_flatMaterials, m_smoothMaterials;
 };
@@ -371,12 +573,10 @@ private:
 }  // namespace
 
 Scene loadNffScene(const std::string& text, const std::string& path) {
+    std::string_view body(text);
     // A UTF-8 byte-order mark is harmless: skip it.
-    if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) {
-        const std::string body = text.substr(3);  // the tokenizer points into it
-        return NffReader(body, path).read(body);
-    }
-    return NffReader(text, path).read(text);
+    if (body.size() >= 3 && body.compare(0, 3, "\xEF\xBB\xBF") == 0) body.remove_prefix(3);
+    return NffReader(body, path).read();
 }
 
 }  // namespace raylab

@@ -124,7 +124,7 @@ TEST_CASE("recorder: orthographic camera rays are recognised") {
     CHECK(r.result.rays.total(RayType::Camera) == 20u * 16u);
 }
 
-TEST_CASE("recorder: forwards answers unchanged (same image) and records in a thread-independent order") {
+TEST_CASE("recorder: same image as without it, rays in a thread-independent pixel order") {
     Scene scene = loadScene(demoPath());
     const RenderOptions one = optionsFor(scene, 40, 30, 1, 1);
     const RenderOptions two = optionsFor(scene, 40, 30, 1, 2);
