@@ -21,11 +21,6 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-struct TileCounters {
-    RayCounters rays;
-    uint64_t nonFinite = 0;
-};
-
 /// Replaces a non-finite radiance by black and counts it: no NaN or Inf may
 /// ever reach a pixel.
 Color sanitize(const Color& c, uint64_t& nonFinite) {
@@ -53,14 +48,8 @@ uint64_t pixelSeed(uint64_t seed, uint64_t pixel) {
     return z ^ (z >> 31);
 }
 
-/// One radiance sample with its first-hit data.
-struct Sample {
-    Color c;
-    FirstHit first;
-};
-
 Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
-                   const RenderOptions& opt, double px, double py, TileCounters& tc) {
+                   const RenderOptions& opt, double px, double py, WorkCounters& tc) {
     Sample s;
     const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
     s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
@@ -78,7 +67,7 @@ double maxDifference(const Color& a, const Color& b) {
 class AdaptivePixel {
 public:
     AdaptivePixel(const WhittedIntegrator& integrator, const Scene& scene,
-                  const RenderOptions& opt, int x, int y, TileCounters& tc)
+                  const RenderOptions& opt, int x, int y, WorkCounters& tc)
         : m_integrator(integrator), m_scene(scene), m_opt(opt), m_x(x), m_y(y), m_tc(tc),
           m_res(1 << opt.adaptiveMaxLevel) {
         m_cache.resize(size_t(m_res + 1) * (m_res + 1));
@@ -128,7 +117,7 @@ private:
     const Scene& m_scene;
     const RenderOptions& m_opt;
     int m_x, m_y;
-    TileCounters& m_tc;
+    WorkCounters& m_tc;
     int m_res;  ///< finest grid steps per pixel side: 2^maxLevel
     std::vector<Sample> m_cache;
     std::vector<bool> m_done;
@@ -143,7 +132,7 @@ void storePixel(Film& film, size_t i, const Color& c, double coverage) {
 
 /// Renders pixel (x, y) with stratified supersampling.
 void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
-                 const RenderOptions& opt, Film& film, int x, int y, TileCounters& tc) {
+                 const RenderOptions& opt, Film& film, int x, int y, WorkCounters& tc) {
     const size_t i = film.index(x, y);
     if (opt.adaptiveThreshold > 0) {
         double coverage = 0;
@@ -176,44 +165,68 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
     storePixel(film, i, sum / double(n), double(hits) / n);
 }
 
-/// SPD procedure: one eye ray through every pixel corner ((W+1)·(H+1) rays),
-/// each pixel the mean of its four corners. Rows of corners run in parallel.
-void renderCorners(const WhittedIntegrator& integrator, const Scene& scene,
-                   const RenderOptions& opt, Film& film,
-                   tbb::enumerable_thread_specific<TileCounters>& counters,
-                   const std::function<void(int rowsDone, int rows)>& rowDone,
-                   const std::atomic<bool>* cancel) {
-    const int cw = opt.width + 1, ch = opt.height + 1;
-    std::vector<Sample> corners(size_t(cw) * ch);
-    std::atomic<int> rowsDone{0};
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, ch, 1),
-        [&](const tbb::blocked_range<int>& range) {
-            TileCounters& tc = counters.local();
-            for (int j = range.begin(); j != range.end(); ++j) {
-                if (cancel && cancel->load(std::memory_order_relaxed)) return;
-                for (int i = 0; i < cw; ++i)
-                    corners[size_t(j) * cw + i] = traceSample(integrator, scene, opt, i, j, tc);
-                rowDone(++rowsDone, ch);
-            }
-        },
-        tbb::simple_partitioner());
-    if (cancel && cancel->load()) return;
-    for (int y = 0; y < opt.height; ++y) {
-        for (int x = 0; x < opt.width; ++x) {
-            const Sample& a = corners[size_t(y) * cw + x];
-            const Sample& b = corners[size_t(y) * cw + x + 1];
-            const Sample& c = corners[size_t(y + 1) * cw + x];
-            const Sample& d = corners[size_t(y + 1) * cw + x + 1];
+}  // namespace
+
+FrameRenderer::FrameRenderer(const Scene& scene, const Accelerator& accel,
+                             const RenderOptions& options, const EffectSet& effects)
+    : m_scene(scene), m_options(options),
+      m_integrator(std::make_unique<WhittedIntegrator>(scene, accel, options, effects)),
+      m_tilesX((options.width + kTileSize - 1) / kTileSize),
+      m_tilesY((options.height + kTileSize - 1) / kTileSize) {}
+
+FrameRenderer::~FrameRenderer() = default;
+
+int FrameRenderer::workItemCount() const {
+    return m_options.spd ? m_options.height + 1 : m_tilesX * m_tilesY;
+}
+
+FrameBuffers FrameRenderer::makeBuffers() const {
+    FrameBuffers b;
+    b.film = Film(m_options.width, m_options.height);
+    if (m_options.spd) b.corners.resize(size_t(m_options.width + 1) * (m_options.height + 1));
+    return b;
+}
+
+WorkRegion FrameRenderer::region(int item) const {
+    if (m_options.spd) return {0, item, m_options.width + 1, item + 1};
+    const int x0 = (item % m_tilesX) * kTileSize, y0 = (item / m_tilesX) * kTileSize;
+    return {x0, y0, std::min(x0 + kTileSize, m_options.width), std::min(y0 + kTileSize, m_options.height)};
+}
+
+void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const {
+    const WorkRegion r = region(item);
+    if (m_options.spd) {
+        // SPD procedure: one eye ray through every pixel corner, (W+1)·(H+1)
+        // rays; a work item is one row of corners.
+        const int cw = m_options.width + 1;
+        for (int i = r.x0; i < r.x1; ++i)
+            buffers.corners[size_t(r.y0) * cw + i] =
+                traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+        return;
+    }
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            renderPixel(*m_integrator, m_scene, m_options, buffers.film, x, y, counters);
+}
+
+void FrameRenderer::finish(FrameBuffers& buffers) const {
+    if (!m_options.spd) return;
+    // Each pixel is the mean of its four corners.
+    const int cw = m_options.width + 1;
+    Film& film = buffers.film;
+    for (int y = 0; y < m_options.height; ++y) {
+        for (int x = 0; x < m_options.width; ++x) {
+            const Sample& a = buffers.corners[size_t(y) * cw + x];
+            const Sample& b = buffers.corners[size_t(y) * cw + x + 1];
+            const Sample& c = buffers.corners[size_t(y + 1) * cw + x];
+            const Sample& d = buffers.corners[size_t(y + 1) * cw + x + 1];
             const size_t i = film.index(x, y);
-            if (a.first.hit && opt.wantAovs) storeFirstHit(film, i, a.first);
+            if (a.first.hit && m_options.wantAovs) storeFirstHit(film, i, a.first);
             storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25,
                        0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit));
         }
     }
 }
-
-}  // namespace
 
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const EffectSet& effects, const ProgressCallback& progress,
@@ -223,57 +236,41 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
         threadLimit = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
-    RenderResult result;
-    result.film = Film(options.width, options.height);
-    WhittedIntegrator integrator(scene, accel, options, effects);
-
-    const int tilesX = (options.width + kTileSize - 1) / kTileSize;
-    const int tilesY = (options.height + kTileSize - 1) / kTileSize;
-    const int tileCount = tilesX * tilesY;
-    tbb::enumerable_thread_specific<TileCounters> counters;
-    std::atomic<int> tilesDone{0};
+    const FrameRenderer frame(scene, accel, options, effects);
+    FrameBuffers buffers = frame.makeBuffers();
+    const int items = frame.workItemCount();
+    tbb::enumerable_thread_specific<WorkCounters> counters;
+    std::atomic<int> done{0};
     std::mutex progressMutex;
 
+    RenderResult result;
     const auto start = std::chrono::steady_clock::now();
-    if (options.spd) {
-        renderCorners(integrator, scene, options, result.film, counters,
-                      [&](int done, int rows) {
-                          if (!progress) return;
-                          std::lock_guard<std::mutex> lock(progressMutex);
-                          progress(double(done) / rows);
-                      },
-                      cancel);
-    } else {
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, tileCount, 1),
+        tbb::blocked_range<int>(0, items, 1),
         [&](const tbb::blocked_range<int>& range) {
-            TileCounters& tc = counters.local();
-            for (int tile = range.begin(); tile != range.end(); ++tile) {
+            WorkCounters& local = counters.local();
+            for (int item = range.begin(); item != range.end(); ++item) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
-                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, options.width);
-                const int y1 = std::min(y0 + kTileSize, options.height);
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x)
-                        renderPixel(integrator, scene, options, result.film, x, y, tc);
-                const int done = ++tilesDone;
+                frame.renderWorkItem(item, buffers, local);
+                const int n = ++done;
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progressMutex);
-                    progress(double(done) / tileCount);
+                    progress(double(n) / items);
                 }
             }
         },
         tbb::simple_partitioner());
-    }
+    result.cancelled = cancel && cancel->load();
+    if (!result.cancelled) frame.finish(buffers);
     result.renderSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // Integer sums: the same totals whatever the thread count.
-    for (const TileCounters& tc : counters) {
-        result.rays += tc.rays;
-        result.nonFiniteSamples += tc.nonFinite;
+    for (const WorkCounters& c : counters) {
+        result.rays += c.rays;
+        result.nonFiniteSamples += c.nonFinite;
     }
-    result.cancelled = cancel && cancel->load();
+    result.film = std::move(buffers.film);
     return result;
 }
 

@@ -3,6 +3,8 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
+#include <vector>
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
@@ -10,12 +12,63 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/whitted_integrator.h"
 
 namespace raylab {
 
 /// Called from worker threads with the fraction of tiles finished (0..1);
 /// calls are serialised by the renderer.
 using ProgressCallback = std::function<void(double fraction)>;
+
+/// One radiance sample with what the camera ray saw first.
+struct Sample {
+    Color c;
+    FirstHit first;
+};
+
+/// Ray counts and replaced non-finite samples of one worker.
+struct WorkCounters {
+    RayCounters rays;
+    uint64_t nonFinite = 0;
+};
+
+/// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
+/// of the SPD procedure.
+struct FrameBuffers {
+    Film film;
+    std::vector<Sample> corners;
+};
+
+/// The rectangle a work item writes: pixels [x0,x1)×[y0,y1) of the film, or
+/// in SPD mode corners [x0,x1)×[y0,y1) of the corner grid.
+struct WorkRegion {
+    int x0, y0, x1, y1;
+};
+
+/// One frame cut into independent work items: 16×16 pixel tiles, or rows of
+/// pixel corners in SPD mode. Items can run in any order, on any thread or
+/// process; each writes only its own region, so the frame is deterministic.
+/// render() drives it with TBB; the distributed renderer hands items to ranks.
+class FrameRenderer {
+public:
+    FrameRenderer(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                  const EffectSet& effects);
+    ~FrameRenderer();
+
+    int workItemCount() const;
+    WorkRegion region(int item) const;
+    FrameBuffers makeBuffers() const;
+    /// Renders one item into `buffers` (thread-safe for distinct items).
+    void renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const;
+    /// After every item: SPD mode averages the corners into pixels.
+    void finish(FrameBuffers& buffers) const;
+
+private:
+    const Scene& m_scene;
+    RenderOptions m_options;
+    std::unique_ptr<WhittedIntegrator> m_integrator;
+    int m_tilesX, m_tilesY;
+};
 
 struct RenderResult {
     Film film;
