@@ -6,12 +6,9 @@
 
 namespace raylab {
 
-RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o) {
-    RenderOptions r;
-    r.width = scene.image.width;
-    r.height = scene.image.height;
-    r.spp = scene.image.spp;
-    r.maxDepth = scene.image.maxDepth;
+namespace {
+
+void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.spd) {
         r.spd = true;
         r.width = r.height = 512;
@@ -33,13 +30,25 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
                                  : *o.bvhQuality == "high" ? AccelOptions::BvhQuality::High
                                                            : AccelOptions::BvhQuality::Medium;
     }
-    r.accelOptions.robust = o.robust;
+    if (o.robust) r.accelOptions.robust = true;
     if (o.precision) r.precision = *o.precision == "float" ? Precision::Float : Precision::Double;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;
     }
     if (o.effects) r.forceAllEffects = *o.effects == "all";
+}
+
+}  // namespace
+
+RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o) {
+    RenderOptions r;
+    r.width = scene.image.width;
+    r.height = scene.image.height;
+    r.spp = scene.image.spp;
+    r.maxDepth = scene.image.maxDepth;
+    apply(r, scene.settings);
+    apply(r, o);
     // Geometry goes to Embree in float relative to the eye (camera-relative
     // rendering), and secondary-ray offsets are scaled in the same frame.
     r.accelOptions.origin = scene.camera.frame().eye;

@@ -7,22 +7,14 @@
 #include <string>
 
 #include "renderer/render_options.h"
+#include "renderer/render_overrides.h"
 #include "renderer/scene.h"
 
 namespace raylab {
 
-/// Settings given on the command line; unset ones fall back to the scene.
-struct RenderOverrides {
-    std::optional<int> width, height, spp, maxDepth, threads, adaptiveMaxLevel;
-    std::optional<double> adaptiveThreshold, minWeight, epsilon;
-    std::optional<uint64_t> seed;
-    std::optional<std::string> accel, bvhQuality, precision, effects;
-    bool spd = false;
-    bool robust = false;
-};
-
-/// Scene settings overridden by the flags; --spd first applies the SPD
-/// procedure's settings (512x512, depth 5), which explicit flags still override.
+/// The render options: defaults, then the scene file's image settings and
+/// "render" block, then the command-line flags `o`. --spd first applies the
+/// SPD procedure's settings (512x512, depth 5), which explicit flags still override.
 RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o);
 
 /// Refuses (InputError) a render whose image buffers would not fit in the

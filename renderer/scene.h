@@ -10,6 +10,7 @@
 #include "geometry/shape.h"
 #include "geometry/triangle_mesh.h"
 #include "renderer/camera.h"
+#include "renderer/render_overrides.h"
 #include "shading/color.h"
 #include "shading/light.h"
 #include "shading/material.h"
@@ -63,6 +64,7 @@ struct Scene {
     Camera camera;
     double cameraNear = 0;   ///< camera rays start at this distance from the eye (NFF hither)
     ImageSettings image;
+    RenderOverrides settings;  ///< the scene file's "render" block (accuracy knobs)
     Color background{0, 0, 0};
     Color ambient{0, 0, 0};  ///< Ia
     std::vector<Light> lights;

@@ -173,6 +173,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
             ctx.bestU = h->u;
             ctx.bestV = h->v;
             ctx.bestObject = table.objects[args->primID];
+            ctx.exactHit = true;
         }
     }
 }
@@ -333,6 +334,7 @@ void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, dou
     ctx.bestT = tMax;
     ctx.bestU = ctx.bestV = 0;
     ctx.bestObject = 0;
+    ctx.exactHit = false;
 }
 
 std::optional<Hit> EmbreeAccelerator::decode(const RTCRayHit& rayhit,
@@ -342,7 +344,7 @@ std::optional<Hit> EmbreeAccelerator::decode(const RTCRayHit& rayhit,
     if (geomId == m_userGeomId) {
         // The last analytic hit written to Embree's record is the one in the
         // context: a later, closer triangle would have replaced the geomID.
-        if (ctx.ray) return Hit{ctx.bestT, ctx.bestObject, 0, ctx.bestU, ctx.bestV};
+        if (ctx.exactHit) return Hit{ctx.bestT, ctx.bestObject, 0, ctx.bestU, ctx.bestV};
         return Hit{rayhit.ray.tfar, m_analytic.objects[rayhit.hit.primID], 0, rayhit.hit.u,
                    rayhit.hit.v};
     }

@@ -36,12 +36,16 @@ struct EmbreeQueryContext {
     RTCIntersectContext rtc;  ///< Embree's context; must stay the first member
     /// The caller's exact double ray, or null: analytic shapes are then tested
     /// against Embree's float copy of the ray (made relative to origin()).
+    /// Set it only for rtcIntersect1/rtcOccluded1; leave it null for packets and
+    /// streams (one context cannot describe several rays, and incoherent
+    /// streams call back with N = 1, so the callbacks could not tell).
     const Ray* ray = nullptr;
     double tMin = 0;   ///< exclusive lower bound, double (exact path only)
     double bestT = 0;  ///< closest analytic hit so far; starts at tMax
     double bestU = 0;  ///< its shape parameters
     double bestV = 0;
     uint32_t bestObject = 0;  ///< its object index
+    bool exactHit = false;    ///< an analytic hit was recorded from `ray`
 };
 
 class EmbreeAccelerator final : public Accelerator {

@@ -1,5 +1,8 @@
 #include "renderer/accel/naive_accelerator.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "geometry/triangle.h"
 
 namespace raylab {
@@ -60,6 +63,14 @@ NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
         const Object& o = scene.objects[i];
         const auto object = static_cast<uint32_t>(i);
         if (o.isMesh()) {
+            // Same check as the Embree back end: a bad index would read garbage.
+            for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
+                for (const uint32_t index : o.mesh->triangles[t])
+                    if (index >= o.mesh->positions.size())
+                        throw std::invalid_argument(
+                            "naive: mesh '" + o.name + "': triangle " + std::to_string(t) +
+                            " uses vertex " + std::to_string(index) + " of " +
+                            std::to_string(o.mesh->positions.size()));
             for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
                 m_surfaces.push_back(Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t)));
         } else if (o.shape) {

@@ -199,6 +199,7 @@ private:
     std::optional<uint32_t> m_defaultMaterial;
 
     void readImage(const JsonValue& v, const std::string& path);
+    void readRenderSettings(const JsonValue& v, const std::string& path);
     void readCamera(const JsonValue& v, const std::string& path);
     void readLights(const JsonValue& v, const std::string& path);
     Light readLight(const JsonValue& v, const std::string& path);
@@ -276,8 +277,9 @@ Scene SceneReader::read(const JsonValue& root) {
              std::string("a scene file must be a JSON object ({...}), got ") + root.typeName());
     const Fields top(
         *this, root, "", "a scene",
-        {"image", "camera", "background", "ambient", "lights", "materials", "objects"});
+        {"image", "render", "camera", "background", "ambient", "lights", "materials", "objects"});
     if (const JsonValue* v = top.get("image")) readImage(*v, "image");
+    if (const JsonValue* v = top.get("render")) readRenderSettings(*v, "render");
     readCamera(top.need("camera"), "camera");
     if (const JsonValue* v = top.get("background")) m_scene.background = color(*v, "background");
     if (const JsonValue* v = top.get("ambient")) m_scene.ambient = color(*v, "ambient");
@@ -295,6 +297,30 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
     if (const JsonValue* x = f.get("height")) im.height = integer(*x, f.path("height"), 1, 32768);
     if (const JsonValue* x = f.get("spp")) im.spp = integer(*x, f.path("spp"), 1, 65536);
     if (const JsonValue* x = f.get("depth")) im.maxDepth = integer(*x, f.path("depth"), 1, 100);
+}
+
+void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
+    const Fields f(*this, v, path, "the render settings",
+                   {"adaptive", "adaptive_levels", "min_weight", "seed", "precision", "epsilon",
+                    "bvh_quality", "robust", "accel"});
+    RenderOverrides& r = m_scene.settings;
+    if (const JsonValue* x = f.get("adaptive")) r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
+    if (const JsonValue* x = f.get("adaptive_levels"))
+        r.adaptiveMaxLevel = integer(*x, f.path("adaptive_levels"), 1, 8);
+    if (const JsonValue* x = f.get("min_weight")) {
+        r.minWeight = nonNegative(*x, f.path("min_weight"));
+        if (*r.minWeight > 1) fail(*x, f.path("min_weight"), "must be in [0, 1] (got " + fmt(*r.minWeight) + ")");
+    }
+    if (const JsonValue* x = f.get("seed")) r.seed = uint64_t(integer(*x, f.path("seed"), 0, 2147483647));
+    if (const JsonValue* x = f.get("precision"))
+        r.precision = choice<std::string>(*x, f.path("precision"), {{"float", "float"}, {"double", "double"}});
+    if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
+    if (const JsonValue* x = f.get("bvh_quality"))
+        r.bvhQuality = choice<std::string>(*x, f.path("bvh_quality"),
+                                           {{"low", "low"}, {"medium", "medium"}, {"high", "high"}});
+    if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));
+    if (const JsonValue* x = f.get("accel"))
+        r.accel = choice<std::string>(*x, f.path("accel"), {{"embree", "embree"}, {"naive", "naive"}});
 }
 
 void SceneReader::readCamera(const JsonValue& v, const std::string& path) {

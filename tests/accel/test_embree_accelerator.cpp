@@ -173,6 +173,9 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
         CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
                              "embree: mesh 'bad': triangle 1 uses vertex 4 of 4",
                              std::invalid_argument);
+        CHECK_THROWS_WITH_AS(NaiveAccelerator{scene},
+                             "naive: mesh 'bad': triangle 1 uses vertex 4 of 4",
+                             std::invalid_argument);
     }
     SUBCASE("non-finite vertex") {
         Scene scene;
@@ -311,8 +314,9 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
             packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
             packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
         }
+        // Even with a double ray in the context, 8-wide callbacks use the lanes.
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        EmbreeAccelerator::initContext(ctx, &rays[base], 0, kInf);
         rtcIntersect8(valid, accel.rtcHandle(), &ctx.rtc, &packet);
         for (int k = 0; k < 8; ++k) {
             RTCRayHit rh{};

@@ -1,0 +1,242 @@
+#pragma once
+// Shared by the robustness tests: running the real raylab binary with a
+// deadline, a scratch directory whose contents are checked afterwards, and
+// the checks every refused input must pass (exit code, exactly one
+// "raylab: error: " line, nothing written).
+
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace raylab::robust {
+
+/// A scratch directory per test case, removed at the end of the case.
+class Scratch {
+public:
+    Scratch() {
+        static std::atomic<int> counter{0};
+        m_path = std::filesystem::temp_directory_path() /
+                 ("raylab_test_robust_" + std::to_string(long(::getpid())) + "_" +
+                  std::to_string(counter++));
+        std::filesystem::remove_all(m_path);
+        std::filesystem::create_directories(m_path);
+    }
+    ~Scratch() {
+        std::error_code ec;
+        std::filesystem::remove_all(m_path, ec);
+    }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+
+    const std::filesystem::path& path() const { return m_path; }
+    std::string file(const std::string& name) const { return (m_path / name).string(); }
+
+    /// Writes exactly the bytes of `bytes` to `name`; returns the full path.
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const std::string p = file(name);
+        std::filesystem::create_directories(std::filesystem::path(p).parent_path());
+        std::ofstream(p, std::ios::binary) << bytes;
+        return p;
+    }
+
+    /// Names of the regular files in the directory (recursively), sorted.
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::recursive_directory_iterator(m_path))
+            if (e.is_regular_file())
+                names.push_back(std::filesystem::relative(e.path(), m_path).string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    std::filesystem::path m_path;
+};
+
+inline std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The lines of `text` without their '\n' (a last line without one counts).
+inline std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) out.push_back(line);
+    return out;
+}
+
+inline bool startsWith(const std::string& s, const std::string& prefix) {
+    return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+inline bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+/// A raylab process started in the background (stdin /dev/null, stdout and
+/// stderr to files), for tests that signal it or bound its run time.
+class Process {
+public:
+    Process(const std::vector<std::string>& args, const std::string& outFile,
+            const std::string& errFile) {
+        std::vector<std::string> all{RAYLAB_BINARY};
+        all.insert(all.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (std::string& a : all) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        m_start = std::chrono::steady_clock::now();
+        m_pid = ::fork();
+        if (m_pid == 0) {
+            // Child: only async-signal-safe calls until exec.
+            const int in = ::open("/dev/null", O_RDONLY);
+            const int out = ::open(outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            if (in < 0 || out < 0 || err < 0) ::_exit(126);
+            ::dup2(in, 0);
+            ::dup2(out, 1);
+            ::dup2(err, 2);
+            // SIGINT must reach the program's own handler even when the test
+            // runner ignores it.
+            ::signal(SIGINT, SIG_DFL);
+            ::execv(argv[0], argv.data());
+            ::_exit(127);
+        }
+    }
+    ~Process() {
+        if (m_pid > 0 && !m_reaped) {
+            ::kill(m_pid, SIGKILL);
+            int status = 0;
+            ::waitpid(m_pid, &status, 0);
+        }
+    }
+    Process(const Process&) = delete;
+    Process& operator=(const Process&) = delete;
+
+    bool started() const { return m_pid > 0; }
+    pid_t pid() const { return m_pid; }
+    void signal(int sig) const {
+        if (m_pid > 0 && !m_reaped) ::kill(m_pid, sig);
+    }
+    double secondsSinceStart() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    }
+    /// True once the process has exited (reaped); polls for at most `seconds`.
+    bool wait(double seconds) {
+        if (m_reaped) return true;
+        const auto deadline = std::chrono::steady_clock::now() +
+                              std::chrono::duration<double>(seconds);
+        while (true) {
+            int status = 0;
+            const pid_t r = ::waitpid(m_pid, &status, WNOHANG);
+            if (r == m_pid) {
+                m_reaped = true;
+                m_exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+                return true;
+            }
+            if (std::chrono::steady_clock::now() >= deadline) return false;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    /// Exit status (128 + signal for a killed process); -1 before wait() succeeded.
+    int exitCode() const { return m_exitCode; }
+
+private:
+    pid_t m_pid = -1;
+    bool m_reaped = false;
+    int m_exitCode = -1;
+    std::chrono::steady_clock::time_point m_start;
+};
+
+struct RunResult {
+    int exitCode = -1;      ///< 128 + signal when killed; -1 when it had to be killed
+    bool timedOut = false;  ///< still running after the deadline (a hang)
+    double seconds = 0;
+    std::string out, err;
+};
+
+/// Runs `raylab ARGS` with a deadline; a process still running after
+/// `timeoutSeconds` is killed and reported as timed out.
+inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutSeconds = 60) {
+    const Scratch io;
+    RunResult r;
+    {
+        Process p(args, io.file("stdout"), io.file("stderr"));
+        REQUIRE(p.started());
+        if (p.wait(timeoutSeconds)) {
+            r.exitCode = p.exitCode();
+        } else {
+            r.timedOut = true;
+            p.signal(SIGKILL);
+            p.wait(10);
+        }
+        r.seconds = p.secondsSinceStart();
+    }
+    r.out = readFile(io.file("stdout"));
+    r.err = readFile(io.file("stderr"));
+    return r;
+}
+
+/// `render SCENE -o DIR/out.exr --png DIR/out.png --width 8 --height 8 --quiet`
+/// plus `extra`, where DIR is the scene's scratch directory.
+inline std::vector<std::string> tinyRender(const Scratch& dir, const std::string& scene,
+                                           const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args{"render", scene, "-o", dir.file("out.exr"), "--png",
+                                  dir.file("out.png"), "--width", "8", "--height", "8",
+                                  "--quiet", "--threads", "2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+}
+
+/// The contract for refused input: exit `code`, stderr is exactly one line,
+/// "raylab: error: " + `location` + ..., containing `fragment`, and `dir`
+/// holds exactly `inputs` afterwards (no output, no temporary file).
+/// `location` is "FILE:LINE:" or "FILE:" for a whole-file problem, "" for usage.
+inline void checkRefused(const RunResult& r, const Scratch& dir,
+                         const std::vector<std::string>& inputs, int code,
+                         const std::string& location, const std::string& fragment) {
+    CAPTURE(r.err);
+    CHECK_FALSE(r.timedOut);
+    CHECK(r.exitCode == code);
+    const std::vector<std::string> errLines = lines(r.err);
+    CHECK(errLines.size() == 1);
+    if (!errLines.empty()) {
+        CHECK(startsWith(errLines[0], "raylab: error: " + location));
+        CHECK(contains(errLines[0], fragment));
+        CHECK(errLines[0].size() < 400);  // one readable line, not a dump of the input
+    }
+    std::vector<std::string> expected = inputs;
+    std::sort(expected.begin(), expected.end());
+    CHECK(dir.files() == expected);
+}
+
+/// The contract for accepted input: exit 0, an EXR and a PNG written, no
+/// temporary file left, and stderr holding only "raylab: warning: " lines.
+inline void checkRendered(const RunResult& r, const Scratch& dir,
+                          const std::vector<std::string>& inputs) {
+    CAPTURE(r.err);
+    CHECK_FALSE(r.timedOut);
+    CHECK(r.exitCode == 0);
+    for (const std::string& line : lines(r.err)) CHECK(startsWith(line, "raylab: warning: "));
+    std::vector<std::string> expected = inputs;
+    expected.push_back("out.exr");
+    expected.push_back("out.png");
+    std::sort(expected.begin(), expected.end());
+    CHECK(dir.files() == expected);
+}
+
+}  // namespace raylab::robust
