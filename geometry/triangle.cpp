@@ -25,23 +25,40 @@ Vec3 triangleNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
     return cross(p1 - p0, p2 - p0);
 }
 
-std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
-                                             const Vec3& p2, double tMin, double tMax) {
+WatertightRay::WatertightRay(const Ray& ray) : o(ray.o) {
     const Vec3& d = ray.d;
-    if (!isFinite(ray.o) || !isFinite(d) || isDegenerate(p0, p1, p2)) return std::nullopt;
+    if (!isFinite(ray.o) || !isFinite(d)) return;
 
     // Permute the axes so that z is the dominant direction component; swap x
     // and y when d_z < 0 so the permutation keeps the winding (paper §3).
-    const int kz = dominantAxis(d);
-    if (d[kz] == 0) return std::nullopt;  // zero direction
-    int kx = (kz + 1) % 3;
-    int ky = (kx + 1) % 3;
+    kz = dominantAxis(d);
+    if (d[kz] == 0) return;  // zero direction
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
     if (d[kz] < 0) std::swap(kx, ky);
 
     // Shear constants that map the ray direction onto +z with unit length.
-    const double sx = d[kx] / d[kz];
-    const double sy = d[ky] / d[kz];
-    const double sz = 1.0 / d[kz];
+    sx = d[kx] / d[kz];
+    sy = d[ky] / d[kz];
+    sz = 1.0 / d[kz];
+    constexpr double Vec3::*axes[3] = {&Vec3::x, &Vec3::y, &Vec3::z};
+    mx = axes[kx];
+    my = axes[ky];
+    mz = axes[kz];
+    valid = true;
+}
+
+std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
+                                             const Vec3& p2, double tMin, double tMax) {
+    return intersectTriangle(WatertightRay(ray), p0, p1, p2, tMin, tMax);
+}
+
+std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec3& p0,
+                                             const Vec3& p1, const Vec3& p2, double tMin,
+                                             double tMax) {
+    if (!ray.valid) return std::nullopt;
+    const auto mx = ray.mx, my = ray.my, mz = ray.mz;
+    const double sx = ray.sx, sy = ray.sy, sz = ray.sz;
 
     // Vertices relative to the ray origin. A shared vertex is transformed by
     // exactly the same operations in every triangle, which is what makes the
@@ -49,9 +66,9 @@ std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, con
     const Vec3 a = p0 - ray.o;
     const Vec3 b = p1 - ray.o;
     const Vec3 c = p2 - ray.o;
-    const double ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
-    const double bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
-    const double cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
+    const double ax = a.*mx - sx * a.*mz, ay = a.*my - sy * a.*mz;
+    const double bx = b.*mx - sx * b.*mz, by = b.*my - sy * b.*mz;
+    const double cx = c.*mx - sx * c.*mz, cy = c.*my - sy * c.*mz;
 
     // Edge functions: U is the (scaled) weight of p0, V of p1, W of p2. The
     // neighbour across an edge computes exactly the negated value (no FMA
@@ -72,11 +89,14 @@ std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, con
     if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return std::nullopt;
     const double det = U + V + W;
     if (det == 0) return std::nullopt;  // ray parallel to the triangle's plane
+    // Checked only for candidate hits, off the hot path of a loop over many
+    // triangles: a collinear triangle can pass the sign test by rounding.
+    if (isDegenerate(p0, p1, p2)) return std::nullopt;
 
     // Depth: the scaled z coordinates interpolated with the edge weights. As
     // U, V, W share the sign of det, t is a convex combination of the vertex
     // depths and u, v lie in [0, 1].
-    const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
+    const double az = sz * a.*mz, bz = sz * b.*mz, cz = sz * c.*mz;
     const double T = U * az + V * bz + W * cz;
     const double invDet = 1.0 / det;
     const double t = T * invDet;

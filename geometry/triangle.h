@@ -33,6 +33,31 @@ struct TriangleHit {
 std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
                                              const Vec3& p2, double tMin, double tMax);
 
+/// The per-ray constants of the watertight test (axis permutation and shear),
+/// computed once per ray as in the paper, so a loop over many triangles does
+/// not redo the three divisions for each.
+struct WatertightRay {
+    /// Precomputes the constants; a non-finite or zero direction, or a
+    /// non-finite origin, gives an invalid ray that never hits.
+    explicit WatertightRay(const Ray& ray);
+
+    Vec3 o;                         ///< ray origin
+    int kx = 0, ky = 1, kz = 2;     ///< permuted axes: kz is the dominant |d| component
+    double sx = 0, sy = 0, sz = 0;  ///< shear: x' = x - sx·z, y' = y - sy·z, z' = sz·z
+    bool valid = false;
+    /// The permuted axes as member pointers (&Vec3::x, ...): selecting a
+    /// component through them is a fixed offset, not a branch per access.
+    double Vec3::*mx = &Vec3::x;
+    double Vec3::*my = &Vec3::y;
+    double Vec3::*mz = &Vec3::z;
+};
+
+/// \brief intersectTriangle with the per-ray constants precomputed; gives
+///   bit-identical results to the Ray overload.
+std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec3& p0,
+                                             const Vec3& p1, const Vec3& p2, double tMin,
+                                             double tMax);
+
 /// \brief The lecture's Möller–Trumbore test (two-sided, same conventions).
 /// \details Not watertight: a ray through a shared edge can miss both
 ///   triangles. Kept for the accuracy study; the renderer uses intersectTriangle.

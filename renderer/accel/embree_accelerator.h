@@ -91,7 +91,8 @@ public:
     /// \brief Turns the result of rtcIntersect1(rtcHandle(), &ctx.rtc, &rayhit)
     ///   into a Hit: for a triangle {Embree's t, object, triangle, u, v}
     ///   (Scene::surfaceAt recomputes it in double); for an analytic shape the
-    ///   double record kept in the context.
+    ///   double record kept in the context, or Embree's float record when the
+    ///   context carried no double ray.
     std::optional<Hit> decode(const RTCRayHit& rayhit, const EmbreeQueryContext& ctx) const;
 
     /// User data of the analytic user geometry (read by the callbacks).

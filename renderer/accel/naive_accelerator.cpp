@@ -3,8 +3,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "geometry/triangle.h"
-
 namespace raylab {
 
 namespace {
@@ -33,20 +31,21 @@ Surface Surface::triangle(const TriangleMesh& mesh, uint32_t object, uint32_t pr
     return s;
 }
 
-std::optional<Hit> Surface::hit(const Ray& ray, double tMin, double tMax) const {
+std::optional<Hit> Surface::hit(const Ray& ray, const WatertightRay& wray, double tMin,
+                                double tMax) const {
     if (m_shape) {
         const auto h = m_shape->intersect(ray, tMin, tMax);
         if (!h) return std::nullopt;
         return Hit{h->t, m_object, m_prim, h->u, h->v};
     }
-    const auto h = intersectTriangle(ray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax);
+    const auto h = intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax);
     if (!h) return std::nullopt;
     return Hit{h->t, m_object, m_prim, h->u, h->v};
 }
 
-bool Surface::occluded(const Ray& ray, double tMin, double tMax) const {
+bool Surface::occluded(const Ray& ray, const WatertightRay& wray, double tMin, double tMax) const {
     if (m_shape) return m_shape->occluded(ray, tMin, tMax);
-    return intersectTriangle(ray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
+    return intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
         .has_value();
 }
 
@@ -67,10 +66,10 @@ NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
             for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
                 for (const uint32_t index : o.mesh->triangles[t])
                     if (index >= o.mesh->positions.size())
-                        throw std::invalid_argument(
-                            "naive: mesh '" + o.name + "': triangle " + std::to_string(t) +
-                            " uses vertex " + std::to_string(index) + " of " +
-                            std::to_string(o.mesh->positions.size()));
+                        throw std::invalid_argument("naive: mesh '" + o.name + "': triangle " +
+                                                    std::to_string(t) + " uses vertex " +
+                                                    std::to_string(index) + " of " +
+                                                    std::to_string(o.mesh->positions.size()));
             for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
                 m_surfaces.push_back(Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t)));
         } else if (o.shape) {
@@ -81,11 +80,12 @@ NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
 
 std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
     if (!traceable(ray, tMin, tMax)) return std::nullopt;
+    const WatertightRay wray(ray);  // per-ray constants, computed once
     std::optional<Hit> best;
     // Each hit shrinks the interval, so later surfaces only count if closer;
     // on an exact tie the earlier surface in scene order wins.
     for (const Surface& s : m_surfaces) {
-        if (auto h = s.hit(ray, tMin, tMax)) {
+        if (auto h = s.hit(ray, wray, tMin, tMax)) {
             tMax = h->t;
             best = h;
         }
@@ -95,8 +95,9 @@ std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, doub
 
 bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {
     if (!traceable(ray, tMin, tMax)) return false;
+    const WatertightRay wray(ray);
     for (const Surface& s : m_surfaces)
-        if (s.occluded(ray, tMin, tMax)) return true;
+        if (s.occluded(ray, wray, tMin, tMax)) return true;
     return false;
 }
 

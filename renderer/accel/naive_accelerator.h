@@ -13,6 +13,7 @@
 #include "geometry/bounds.h"
 #include "geometry/ray.h"
 #include "geometry/shape.h"
+#include "geometry/triangle.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/scene.h"
 
@@ -29,9 +30,12 @@ public:
 
     /// \brief Closest hit with tMin < t < tMax, as the accelerator reports it
     ///   (object and primitive filled in), or nothing.
-    std::optional<Hit> hit(const Ray& ray, double tMin, double tMax) const;
-    /// Whether anything is hit with tMin < t < tMax.
-    bool occluded(const Ray& ray, double tMin, double tMax) const;
+    /// \param wray the same ray with the watertight test's per-ray constants,
+    ///   computed once per query by the caller.
+    std::optional<Hit> hit(const Ray& ray, const WatertightRay& wray, double tMin,
+                           double tMax) const;
+    /// Whether anything is hit with tMin < t < tMax (same arguments as hit()).
+    bool occluded(const Ray& ray, const WatertightRay& wray, double tMin, double tMax) const;
     /// World-space box of the entry.
     Bounds3 bounds() const;
 

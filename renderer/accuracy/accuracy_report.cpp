@@ -224,14 +224,16 @@ std::string accuracyJson(const AccuracyReport& rep) {
 
 PlotSpec accuracyPlot(const AccuracyReport& rep) {
     PlotSpec spec;
-    spec.title = rep.scene + ": RMSE against the reference vs frame time (" +
-                 std::to_string(rep.width) + "x" + std::to_string(rep.height) + ", " +
-                 std::to_string(rep.threads) + " thread" + (rep.threads == 1 ? "" : "s") + ")";
+    const size_t slash = rep.scene.find_last_of('/');
+    const std::string name = slash == std::string::npos ? rep.scene : rep.scene.substr(slash + 1);
+    spec.title = "Error vs time: " + name + ", " + std::to_string(rep.width) + "x" +
+                 std::to_string(rep.height) + ", " + std::to_string(rep.threads) + " thread" +
+                 (rep.threads == 1 ? "" : "s");
     spec.x.label = "frame time (build + render), ms";
     spec.x.log = true;
     spec.y.label = "RMSE (linear RGB)";
     spec.y.log = true;
-    spec.highlightLabel = "Pareto front";
+    spec.highlightLabel = "on the Pareto front";
     const PlotMarker markers[] = {PlotMarker::Circle, PlotMarker::Square, PlotMarker::Triangle,
                                   PlotMarker::Diamond, PlotMarker::Cross};
     int group = 0;

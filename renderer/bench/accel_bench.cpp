@@ -361,9 +361,12 @@ std::string jsonTiming(const Timing& t, bool naive) {
 }
 
 std::string jsonDocument(const std::vector<Row>& rows, const std::vector<Crossover>& crossovers,
-                         const Settings& s, const std::string& cpu) {
+                         const Settings& s, const std::string& cpu, double loadStart,
+                         double loadEnd) {
     std::string j = "{\n  \"machine\": {\"cpu\": " + jsonString(cpu) +
-                    ", \"cores\": " + std::to_string(logicalCores()) + "},\n";
+                    ", \"cores\": " + std::to_string(logicalCores()) +
+                    ", \"load_average_start\": " + jsonNumber(loadStart) +
+                    ", \"load_average_end\": " + jsonNumber(loadEnd) + "},\n";
     j += "  \"threads\": " + std::to_string(effectiveThreads(s.threads)) +
          ",\n  \"width\": " + std::to_string(s.width) + ",\n  \"height\": " +
          std::to_string(s.height) + ",\n  \"runs\": " + std::to_string(s.runs) +
@@ -394,7 +397,7 @@ PlotSpec makePlot(const std::vector<Row>& rows, const std::vector<std::string>& 
     static const char* const colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
     static const PlotMarker markers[] = {PlotMarker::Circle, PlotMarker::Square,
                                          PlotMarker::Triangle, PlotMarker::Diamond,
-                                         PlotMarker::Cross};
+                                         PlotMarker::Circle};
     PlotSpec plot;
     plot.title = "Time per ray: Embree vs naive (" + std::to_string(s.width) + "x" +
                  std::to_string(s.height) + ", " + std::to_string(effectiveThreads(s.threads)) +
@@ -409,7 +412,9 @@ PlotSpec makePlot(const std::vector<Row>& rows, const std::vector<std::string>& 
         embree.name = families[f] + " (Embree)";
         naive.name = families[f] + " (naive)";
         embree.color = naive.color = colors[f % 5];
-        embree.marker = naive.marker = markers[f % 5];
+        // Scene files: circles in their own colour (a cross cannot be hollow).
+        embree.marker = naive.marker =
+            families[f] == "file" ? PlotMarker::Circle : markers[f % 5];
         naive.filled = false;
         naive.dashed = true;
         // Scene files are unrelated scenes: markers only.
@@ -467,10 +472,11 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
         s.naiveBudget = std::min(s.naiveBudget, 0.5);
     }
     const std::string cpu = cpuModelName();
+    const double loadAtStart = loadAverage();
     out << "raylab bench accel: " << s.width << "x" << s.height << ", 1 ray per pixel centre, "
         << "median of " << s.runs << " runs, naive budget " << s.naiveBudget << " s/frame\n"
         << "machine: " << cpu << ", " << logicalCores() << " logical cores; threads: "
-        << effectiveThreads(s.threads) << "\n"
+        << effectiveThreads(s.threads) << "; load average " << loadAtStart << "\n"
         << "speedup = Embree rays/s / naive rays/s; pixels = naive frame (full) or every k-th "
            "pixel (1/k)\n\n";
     printHeader(out);
@@ -506,12 +512,15 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
     }
     char total[64];
     std::snprintf(total, sizeof total, "%.1f", secondsSince(start));
-    out << "total benchmark time: " << total << " s\n";
+    const double loadAtEnd = loadAverage();
+    out << "total benchmark time: " << total << " s; load average now " << loadAtEnd
+        << " (a load above the core count means other work shared the cores, which inflates "
+           "wall-clock times)\n";
 
     if (format) {
         writeFileAtomically(options.outPath, *format == TableFormat::Csv
                                                  ? csvTable(rows, s, cpu)
-                                                 : jsonDocument(rows, crossovers, s, cpu));
+                                                 : jsonDocument(rows, crossovers, s, cpu, loadAtStart, loadAtEnd));
         out << "results: " << options.outPath << "\n";
     }
     if (!options.plotPath.empty()) {

@@ -30,6 +30,13 @@ std::string cpuModelName() {
     return "unknown CPU";
 }
 
+double loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    double load = -1;
+    if (!(in >> load)) return -1;
+    return load;
+}
+
 int logicalCores() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 int effectiveThreads(int threads) {

@@ -10,6 +10,10 @@ namespace raylab {
 /// The CPU model from /proc/cpuinfo ("model name"), or "unknown CPU".
 std::string cpuModelName();
 
+/// The 1-minute load average from /proc/loadavg (-1 when unreadable): on a
+/// shared machine it says how far wall-clock timings can be trusted.
+double loadAverage();
+
 /// Logical cores the process may use (std::thread::hardware_concurrency, >= 1).
 int logicalCores();
 

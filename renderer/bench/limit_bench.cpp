@@ -233,7 +233,8 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
         << (options.spd ? " SPD procedure (rays through pixel corners)" : "") << ", spp "
         << renderOptions.spp << ", depth " << renderOptions.maxDepth << ", " << r.primitives
         << " primitives, Embree device + build " << fixed(r.buildSeconds * 1e3, 1) << " ms\n"
-        << "  machine: " << cpu << ", " << logicalCores() << " logical cores; threads: "
+        << "  machine: " << cpu << ", " << logicalCores() << " logical cores, load average "
+        << loadAverage() << "; threads: "
         << r.threads << "; median of " << r.runs << " interleaved runs, "
         << PhaseClock(r.threads == 1).name() << "\n"
         << std::flush;

@@ -28,8 +28,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -60,16 +61,28 @@ bool isKeyword(std::string_view t) {
            t == "resolution";
 }
 
+/// A token for a message: at most 40 bytes, and anything but printable ASCII
+/// as \xNN, so a binary blob or an escape sequence cannot garble the terminal.
 std::string quoted(std::string_view t) {
-    // Long garbage (a binary blob, a run-on line) is shortened in messages.
-    if (t.size() > 40) return "'" + std::string(t.substr(0, 40)) + "...'";
-    return "'" + std::string(t) + "'";
+    static const char* const kHex = "0123456789ABCDEF";
+    std::string s = "'";
+    for (const char c : t.substr(0, 40)) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u < 0x7f) {
+            s += c;
+        } else {
+            s += "\\x";
+            s += kHex[u >> 4];
+            s += kHex[u & 15];
+        }
+    }
+    return s + (t.size() > 40 ? "...'" : "'");
 }
 
 /// Token stream over the whole file text, tracking line numbers.
 class Tokenizer {
 public:
-    Tokenizer(std::string_view text) : m_p(text.data()), m_end(text.data() + text.size()) {}
+    explicit Tokenizer(std::string_view text) : m_p(text.data()), m_end(text.data() + text.size()) {}
 
     /// Next token (its line in tokenLine()), or an empty view at the end of the input.
     std::string_view next() {
@@ -157,7 +170,18 @@ private:
 
     /// Error about the entity being read, located at its first line.
     [[noreturn]] void failEntity(const std::string& message) const {
-        failAt(m_entityLine, m_entity + ": " + message);
+        failAt(m_entityLine, entityName() + ": " + message);
+    }
+
+    std::string entityName() const { return std::string(m_entity); }
+
+    /// What the current entity takes, for count errors (built only on failure).
+    std::string expectedText() const {
+        if (m_polygonCount > 0)
+            return "truncated polygon: expected " + std::to_string(m_polygonCount) +
+                   (m_polygonPatch ? " vertices of 6 numbers (x y z nx ny nz)"
+                                   : " vertices of 3 numbers (x y z)");
+        return std::string("expected ") + m_expected;
     }
 
     void entity(std::string_view t) {
@@ -166,7 +190,8 @@ private:
         m_entity = t;
         m_entityLine = m_tok.tokenLine();
         m_numbersRead = 0;
-        m_countPrefix.clear();
+        m_lastNumberLine = m_entityLine;
+        m_polygonCount = 0;
         m_splitVertex = -1;
         if (t == "s") return sphere();
         if (t == "p") return polygon(false);
@@ -186,9 +211,19 @@ private:
         if (t == "from" || t == "at" || t == "up") {
             m_expected = "3 numbers (x y z)";
             const Vec3 p = vec3("x", "y", "z");
-            if (t == "from") m_from = p, m_seen |= kFrom;
-            if (t == "at") m_at = p, m_seen |= kAt;
-            if (t == "up") m_up = p, m_seen |= kUp;
+            if (t == "from") {
+                m_from = p;
+                m_seen |= kFrom;
+                m_fromLine = m_entityLine;
+            } else if (t == "at") {
+                m_at = p;
+                m_seen |= kAt;
+                m_atLine = m_entityLine;
+            } else {
+                m_up = p;
+                m_seen |= kUp;
+                m_upLine = m_entityLine;
+            }
             return;
         }
         if (t == "angle") {
@@ -242,14 +277,24 @@ private:
     /// The next number of the current entity; `what` names it in messages.
     double number(const char* what) {
         const std::string_view t = m_tok.next();
-        if (t.empty() || isKeyword(t)) {
+        // Keywords start with a letter, numbers never do: the keyword test
+        // stays off the hot path.
+        if (t.empty() || (!looksNumeric(t) && isKeyword(t))) {
             // The entity ended early: a count problem, reported where it starts.
-            const std::string after = t.empty() ? std::string("the end of the file")
-                                                : "'" + std::string(t) + "' on line " +
-                                                      std::to_string(m_tok.tokenLine());
-            failEntity(m_countPrefix + "expected " + m_expected + ", got " +
-                       std::to_string(m_numbersRead) + " number" + (m_numbersRead == 1 ? "" : "s") +
-                       " before " + after + extraHint());
+            // Reported on the line of the entity's last number, where it
+            // stops short; the message names the line it starts on.
+            const std::string got = ", got " + std::to_string(m_numbersRead) + " number" +
+                                    (m_numbersRead == 1 ? "" : "s");
+            const std::string start = m_lastNumberLine == m_entityLine
+                                          ? std::string()
+                                          : " ('" + entityName() + "' starts on line " +
+                                                std::to_string(m_entityLine) + ")";
+            if (t.empty())
+                failAt(m_lastNumberLine, entityName() + ": unexpected end of file: " +
+                                             expectedText() + got + start + extraHint());
+            failAt(m_lastNumberLine, entityName() + ": " + expectedText() + got + " before '" +
+                                         std::string(t) + "' on line " +
+                                         std::to_string(m_tok.tokenLine()) + start + extraHint());
         }
         double v = 0;
         const char* first = t.data();
@@ -257,26 +302,21 @@ private:
         if (*first == '+' && t.size() > 1 && first[1] != '-') ++first;  // from_chars rejects '+'
         const auto [ptr, ec] = std::from_chars(first, last, v);
         const int line = m_tok.tokenLine();
+        if (ptr != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
+            failAt(line, entityName() + ": expected a number for " + what + ", got " + quoted(t));
         if (ec == std::errc::result_out_of_range) {
             // Underflow towards zero is harmless; overflow is not representable.
-            if (ptr == last && parsesAsTiny(t)) {
-                ++m_numbersRead;
-                return 0.0;
-            }
-            failAt(line, m_entity + ": " + what + " is out of range: " + quoted(t));
+            // (Rare path: strtod tells the two apart.)
+            const double approx = std::strtod(std::string(t).c_str(), nullptr);
+            if (!(std::abs(approx) < 1.0))
+                failAt(line, entityName() + ": " + what + " is out of range: " + quoted(t));
+            v = approx;
         }
-        if (ec != std::errc() || ptr != last)
-            failAt(line, m_entity + ": expected a number for " + what + ", got " + quoted(t));
         if (!std::isfinite(v))
-            failAt(line, m_entity + ": " + what + " must be a finite number, got " + quoted(t));
+            failAt(line, entityName() + ": " + what + " must be a finite number, got " + quoted(t));
         ++m_numbersRead;
+        m_lastNumberLine = line;
         return v;
-    }
-
-    /// True for an out-of-range literal whose exponent is negative (an underflow).
-    static bool parsesAsTiny(std::string_view t) {
-        const size_t e = t.find_first_of("eE");
-        return e != std::string_view::npos && e + 1 < t.size() && t[e + 1] == '-';
     }
 
     Vec3 vec3(const char* x, const char* y, const char* z) {
@@ -293,7 +333,7 @@ private:
         const double v = number(what);
         if (v != std::floor(v) || std::abs(v) > 9e15)
             failAt(m_tok.tokenLine(),
-                   m_entity + ": " + what + " must be an integer, got " + formatNumber(v));
+                   entityName() + ": " + what + " must be an integer, got " + formatNumber(v));
         return (long long)v;
     }
 
@@ -320,7 +360,7 @@ private:
     }
 
     void material() {
-        m_expected = "9 numbers (R G B Kd Ks Shine T ior)";
+        m_expected = "8 numbers (R G B Kd Ks Shine T ior)";
         const Color c = color("colour");
         const double kd = number("Kd"), ks = number("Ks");
         const double shine = number("Shine"), t = number("T");
@@ -413,22 +453,27 @@ private:
         const char* name = patch ? "pp" : "p";
         m_expected = "a vertex count";
         const long long n = integer("vertex count");
-        if (n < 3) failEntity("vertex count must be >= 3 (got " + std::to_string(n) + ")");
+        if (n < 3) failEntity("vertex count " + std::to_string(n) + " is below 3");
         // Each vertex needs at least 3 (or 6) one-digit numbers and their
         // separators: a count the rest of the file cannot hold is refused
         // before anything is reserved.
+        // (One byte of slack: the check only guards the allocation, the
+        // vertex reader reports any real shortfall.)
         const unsigned long long minBytes = (unsigned long long)n * (patch ? 12 : 6) - 1;
-        if (n > kMaxPolygonVertices || minBytes > m_tok.remaining())
-            failEntity("vertex count " + std::to_string(n) +
-                       (n > kMaxPolygonVertices
-                            ? " exceeds the limit of " + std::to_string(kMaxPolygonVertices)
-                            : std::string(" is more than the rest of the file can hold")));
-        m_expected = std::to_string(n) + (patch ? " vertices of 6 numbers (x y z nx ny nz)"
-                                                : " vertices of 3 numbers (x y z)");
+        if (n > kMaxPolygonVertices)
+            failEntity("vertex count " + std::to_string(n) + " exceeds the limit of " +
+                       std::to_string(kMaxPolygonVertices));
+        if (minBytes > m_tok.remaining() + 1)
+            failEntity("truncated polygon: vertex count " + std::to_string(n) +
+                       " exceeds what the file holds (" + std::to_string(n) +
+                       " vertices need at least " + std::to_string(minBytes) +
+                       " more bytes, the file ends after " + std::to_string(m_tok.remaining()) +
+                       ")");
+        m_polygonCount = n;
+        m_polygonPatch = patch;
         m_vertices.clear();
         m_normals.clear();
         m_numbersRead = 0;
-        m_countPrefix = "truncated polygon: ";
         m_splitVertex = -1;
         for (long long i = 0; i < n; ++i) {
             const double x = number("vertex x");
@@ -507,20 +552,30 @@ private:
         m_objects.push_back(std::move(o));
     }
 
+    /// The line that makes the camera degenerate: the later of from/at when
+    /// they coincide, else the up line (zero or along the view direction).
+    int cameraErrorLine() const {
+        if (!(length(m_at - m_from) > 0)) return std::max(m_fromLine, m_atLine);
+        if (!(length(m_up) > 0)) return m_upLine;
+        if (!(length(cross(normalize(m_up), normalize(m_at - m_from))) > 1e-9)) return m_upLine;
+        return m_viewLine;
+    }
+
     Scene finish() {
         if ((m_seen & kAll) != kAll) {
             std::string missing;
             const char* names[] = {"from", "at", "up", "angle"};
             for (int i = 0; i < 4; ++i)
                 if (!(m_seen & (1u << i))) missing += std::string(missing.empty() ? "" : ", ") + names[i];
-            failAt(m_viewLine, "viewpoint incomplete: missing " + missing);
+            // Nothing is on a line: a file-level error.
+            failAt(0, "viewpoint incomplete: missing " + missing);
         }
         Scene s;
         s.sourcePath = m_path;
         try {
             s.camera = Camera::perspective(m_from, m_at, m_up, m_angle);
         } catch (const std::invalid_argument& e) {
-            failAt(m_viewLine, e.what());
+            failAt(cameraErrorLine(), e.what());
         }
         s.cameraNear = m_hither;
         s.image.width = m_width;
@@ -550,13 +605,15 @@ private:
 
     Tokenizer m_tok;
     std::string m_path;
-    std::string m_entity;         ///< keyword of the entity being read
+    std::string_view m_entity;    ///< keyword of the entity being read (points into the text)
     int m_entityLine = 0;         ///< line where it starts
-    std::string m_expected;       ///< what it takes, for count errors
-    std::string m_countPrefix;    ///< prefix of count errors ("truncated polygon: ")
+    const char* m_expected = "";  ///< what it takes, for count errors
+    long long m_polygonCount = 0; ///< polygons: vertices announced (0 otherwise)
+    bool m_polygonPatch = false;
     size_t m_numbersRead = 0;     ///< numbers read for it so far
+    int m_lastNumberLine = 0;     ///< line of its last number (its start line before any)
     int m_splitVertex = -1, m_splitLine = 0;
-    int m_viewLine = 0;
+    int m_viewLine = 0, m_fromLine = 0, m_atLine = 0, m_upLine = 0;
     Vec3 m_from{0, 0, 0}, m_at{0, 0, -1}, m_up{0, 1, 0};
     double m_angle = 45, m_hither = 0;
     unsigned m_seen = 0;

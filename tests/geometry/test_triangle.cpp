@@ -190,6 +190,29 @@ TEST_CASE("triangle: invalid rays miss") {
     CHECK_FALSE(intersectTriangle(Ray{{0.25, 0.25, 1}, {0, kInf, -1}}, kP0, kP1, kP2, 0, kInf));
 }
 
+TEST_CASE("triangle: per-ray constants of the watertight test") {
+    // d = (0.5, 0.25, -1): |d_z| dominates -> kz = 2; kx = 0, ky = 1, swapped
+    // because d_z < 0 (keeps the winding) -> kx = 1, ky = 0. Shear
+    // sx = d_y / d_z = -0.25, sy = d_x / d_z = -0.5, sz = 1 / d_z = -1.
+    const WatertightRay w(Ray{{1, 2, 3}, {0.5, 0.25, -1}});
+    REQUIRE(w.valid);
+    CHECK(w.kz == 2);
+    CHECK(w.kx == 1);
+    CHECK(w.ky == 0);
+    CHECK(w.sx == -0.25);
+    CHECK(w.sy == -0.5);
+    CHECK(w.sz == -1.0);
+    CHECK_FALSE(WatertightRay(Ray{{1, 2, 3}, {0, 0, 0}}).valid);
+    CHECK_FALSE(WatertightRay(Ray{{1, 2, kInf}, {0, 0, 1}}).valid);
+    // The precomputed form gives the Ray overload's hit.
+    const auto h =
+        intersectTriangle(WatertightRay(Ray{{0.25, 0.5, 1}, {0, 0, -1}}), kP0, kP1, kP2, 0, kInf);
+    REQUIRE(h);
+    CHECK(h->t == 1.0);
+    CHECK(h->u == 0.25);
+    CHECK(h->v == 0.5);
+}
+
 TEST_CASE("triangle: normal is the CCW cross product, length twice the area") {
     // (2,0,0) × (0,3,0) = (0, 0, 6); area 3.
     CHECK(triangleNormal({0, 0, 0}, {2, 0, 0}, {0, 3, 0}) == Vec3{0, 0, 6});

@@ -3,7 +3,6 @@
 // error with the exact line it is reported on.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -160,9 +159,9 @@ TEST_CASE("nff: cone end points on two lines (format document) or one line (SPD)
     const Bounds3 a = two.objects[0].shape->bounds(), b = one.objects[0].shape->bounds();
     CHECK(a.lo == b.lo);
     CHECK(a.hi == b.hi);
-    // NFF cones have no caps: a ray along the axis from below passes through
-    // the open base (it would hit a base cap at y = 0 otherwise)... and then
-    // meets nothing, since the axis stays inside the cone until the apex cap.
+    // NFF cones have no caps: a ray up the axis enters through the open base
+    // (a capped cone would be hit at y = 0), stays inside the lateral surface
+    // and leaves through the open top (radius 0.5 at y = 2): no hit at all.
     const Ray axis{{0, -5, 0}, {0, 1, 0}};
     CHECK_FALSE(one.objects[0].shape->intersect(axis, 0, 100).has_value());
 }
@@ -223,7 +222,20 @@ TEST_CASE("nff: zero-area polygons are dropped, ior 0 of opaque surfaces accepte
                          "p 3 1 1 1 1 1 1 1 1 1\n"            // a point
                          "s 0 0 0 1\n");
     REQUIRE(s.objects.size() == 1);
-    CHECK(s.objects[0].name == "sphere@9");
+    CHECK(s.objects[0].name == "sphere@12");
+}
+
+TEST_CASE("nff: numbers: signs, exponents, underflow to zero") {
+    // "+1" is accepted (from_chars alone would not), ".5" and "1." too; a
+    // literal below the smallest denormal underflows to 0 rather than failing.
+    const Scene s = load(kView + "s +1 .5 1. 1\ns 1e-400 -0.0 0." + std::string(400, '0') +
+                         "1 2E0\n");
+    REQUIRE(s.objects.size() == 2);
+    const Bounds3 a = s.objects[0].shape->bounds();
+    CHECK(a.lo.x == doctest::Approx(0.0).epsilon(1e-3));  // centre x 1, radius 1 (padded)
+    CHECK(a.hi.y == doctest::Approx(1.5).epsilon(1e-3));
+    const Bounds3 b = s.objects[1].shape->bounds();
+    CHECK(b.hi.x == doctest::Approx(2.0).epsilon(1e-3));  // centre (0, 0, 0), radius 2
 }
 
 TEST_CASE("nff: comments, tabs, CRLF, a UTF-8 byte-order mark and one-line files") {
@@ -253,20 +265,28 @@ TEST_CASE("nff: every error names the exact line") {
         {"unknown entity", kView + "s 0 0 0 1\nq 1 2 3\n", 9, "unknown entity 'q'"},
         {"too few numbers (sphere)", kView + "s 0 0 0\ns 1 1 1 1\n", 8,
          "s: expected 4 numbers (x y z radius), got 3 numbers before 's' on line 9"},
-        {"too few numbers at EOF", kView + "\n\ns 0 0\n\n", 10, "got 2 numbers before the end"},
+        {"too few numbers at EOF", kView + "\n\ns 0 0\n\n", 10,
+         "s: unexpected end of file: expected 4 numbers (x y z radius), got 2 numbers"},
+        {"too few numbers, entity over two lines", kView + "c 0 0 0 1\n0 1 0\n\ns 0 0 0 1\n", 9,
+         "c: expected 8 numbers (base x y z radius, apex x y z radius), got 7 numbers before 's' "
+         "on line 11 ('c' starts on line 8)"},
         {"too many numbers", kView + "s 0 0 0 1 2\n", 8, "too many numbers for 's' (line 8)"},
         {"number before any entity", "1 v\n", 1, "unexpected number '1' before any entity"},
         {"material missing ior", kView + "f 1 1 1 1 0 1 0\ns 0 0 0 1\n", 8,
-         "f: expected 9 numbers (R G B Kd Ks Shine T ior), got 8"},
+         "f: expected 8 numbers (R G B Kd Ks Shine T ior), got 7 numbers before 's' on line 9"},
         {"light with 2 colour numbers", kView + "l 0 0 9 1 1\ns 0 0 0 1\n", 8,
          "expected 3 or 6 numbers"},
-        {"truncated polygon (next entity)", kView + "p 4\n0 0 0\n1 0 0\n1 1 0\ns 0 0 0 1\n", 8,
-         "truncated polygon: expected 4 vertices of 3 numbers (x y z), got 9 numbers before 's' "
-         "on line 12"},
-        {"truncated polygon (end of file)", kView + "p 3\n0 0 0\n1 0 0\n", 8,
-         "truncated polygon"},
-        {"polygon vertex short of a number", kView + "p 3\n0 0 0\n1 0\n0 1 0\ns 0 0 0 1\n", 8,
-         "vertex 2 starts on line 10"},
+        {"truncated polygon (next entity)", kView + "p 4\n0 0 0\n1 0 0\n1 1 0\ns 0 0 0 1\n", 11,
+         "p: truncated polygon: expected 4 vertices of 3 numbers (x y z), got 9 numbers before "
+         "'s' on line 12 ('p' starts on line 8)"},
+        {"truncated polygon (end of file)", kView + "p 3\n0 0 0\n1 0 0\n0 1\n", 11,
+         "p: unexpected end of file: truncated polygon: expected 3 vertices of 3 numbers (x y z), "
+         "got 8 numbers ('p' starts on line 8)"},
+        {"polygon count beyond the file", kView + "p 3\n0 0 0\n1 0 0\n", 8,
+         "p: truncated polygon: vertex count 3 exceeds what the file holds"},
+        {"polygon vertex short of a number", kView + "p 3\n0 0 0\n1 0\n0 1 0\ns 0 0 0 1\n", 11,
+         "got 8 numbers before 's' on line 12 ('p' starts on line 8) (vertex 2 starts on line 10 "
+         "and continues on the next line: a number missing there?)"},
         {"patch without normals", kView + "pp 3\n0 0 0\n1 0 0\n0 1 0\n", 8, "truncated polygon"},
         {"not a number", kView + "s 0 0\nzero 1\n", 9,
          "s: expected a number for centre z, got 'zero'"},
@@ -275,11 +295,18 @@ TEST_CASE("nff: every error names the exact line") {
         {"NaN", kView + "s 0 nan 0 1\n", 8, "centre y must be a finite number, got 'nan'"},
         {"Inf", kView + "l 0 0 0\ns 0 0 0 inf\n", 9, "radius must be a finite number"},
         {"overflow", kView + "\ns 1e999 0 0 1\n", 9, "out of range: '1e999'"},
+        {"overflow with junk", kView + "s 0 0 0 1e999x\n", 8,
+         "expected a number for radius, got '1e999x'"},
+        {"long junk token", kView + "s 0 0 0 " + std::string(100, '7') + "x\n", 8,
+         "got '7777777777777777777777777777777777777777...'"},
         {"absurd polygon count", kView + "p 2000000000\n0 0 0\n", 8,
-         "vertex count 2000000000 is more than the rest of the file can hold"},
-        {"absurd patch count", kView + "pp 1e15\n", 8, "is more than the rest of the file"},
-        {"polygon count below 3", kView + "p 2\n0 0 0\n1 1 1\n", 8, "vertex count must be >= 3"},
-        {"negative polygon count", kView + "p -5\n", 8, "vertex count must be >= 3 (got -5)"},
+         "p: vertex count 2000000000 exceeds the limit of 1048576"},
+        {"absurd patch count", kView + "pp 1e15\n", 8, "exceeds the limit"},
+        {"count the file cannot hold", kView + "p 1000\n0 0 0\n", 8,
+         "p: truncated polygon: vertex count 1000 exceeds what the file holds (1000 vertices need "
+         "at least 5999 more bytes, the file ends after 7)"},
+        {"polygon count below 3", kView + "p 2\n0 0 0\n1 1 1\n", 8, "p: vertex count 2 is below 3"},
+        {"negative polygon count", kView + "p -5\n", 8, "vertex count -5 is below 3"},
         {"fractional polygon count", kView + "\np 3.5\n", 9, "vertex count must be an integer"},
         {"polygon count not a number", kView + "p x\n", 8, "expected a number for vertex count"},
         {"zero patch normal", kView + "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n", 10,
@@ -296,14 +323,19 @@ TEST_CASE("nff: every error names the exact line") {
          "distance must be >= 0"},
         {"bad resolution", "v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 45\nresolution 0 10\n", 6,
          "resolution: expected two integers in [1, 65536]"},
-        {"viewpoint incomplete", "v\nfrom 0 0 1\nat 0 0 0\nangle 45\ns 0 0 0 1\n", 1,
+        {"viewpoint incomplete", "v\nfrom 0 0 1\nat 0 0 0\nangle 45\ns 0 0 0 1\n", 0,
          "viewpoint incomplete: missing up"},
-        {"eye at the look-at point", "\nv\nfrom 0 0 0\nat 0 0 0\nup 0 1 0\nangle 45\n", 2,
+        {"eye at the look-at point", "\nv\nat 0 0 0\nfrom 0 0 0\nup 0 1 0\nangle 45\n", 4,
          "coincide"},
+        {"zero up vector", "v\nfrom 0 0 1\nat 0 0 0\nup 0 0 0\nangle 45\n", 4, "zero length"},
+        {"up along the view", "v\nfrom 0 0 1\nat 0 0 0\nangle 45\nup 0 0 -3\n", 5, "parallel"},
         {"UTF-16", std::string("\xFF\xFEv\0", 4), 1, "not a text file"},
+        {"control bytes are escaped", kView + "s 0 0 0 1\n\x1b[2J\x89x\n", 9,
+         "unknown entity '\\x1B[2J\\x89x'"},
     };
     for (const Case& c : cases) {
-        CAPTURE(c.name);
+        const std::string caseName = c.name;
+        CAPTURE(caseName);
         const Failure f = failureOf(c.text);
         CAPTURE(f.message);
         CHECK(f.line == c.line);
@@ -317,18 +349,25 @@ TEST_CASE("nff: every error names the exact line") {
     CHECK(contains(none.located, "t.nff: viewpoint incomplete: missing from, at, up, angle"));
 }
 
-TEST_CASE("nff: an absurd vertex count neither allocates nor scans") {
-    // 2e9 vertices would be 48 GB of Vec3: refused at once from the file size.
-    const auto start = std::chrono::steady_clock::now();
+TEST_CASE("nff: vertex counts are checked against the limit and the bytes left") {
+    // 2e9 vertices would be 48 GB of Vec3: over the limit, refused before any
+    // vertex is read or reserved.
     const Failure f = failureOf(kView + "p 2000000000\n" + std::string(100000, ' ') + "1 2 3\n");
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(f.line == 8);
-    CHECK(seconds < 0.5);
-    // A count the rest of the file can hold is read and then found short.
-    const Failure g = failureOf(kView + "p 5\n0 0 0 1 0 0 1 1 0 0 1 0\n");
+    CHECK(contains(f.message, "exceeds the limit"));
+    // Under the limit but more than the rest of the file can hold: each vertex
+    // takes at least "0 0 0 " (6 bytes), so 1e6 vertices need 5999999 bytes and
+    // the 100007 left after the count are not enough.
+    const Failure g = failureOf(kView + "p 1000000\n" + std::string(100000, ' ') + "1 2 3\n");
     CHECK(g.line == 8);
-    CHECK(contains(g.message, "truncated polygon"));
+    CHECK(contains(g.message, "(1000000 vertices need at least 5999999 more bytes, the file "
+                              "ends after 100007)"));
+    // A count the rest of the file can hold is read and then found short.
+    const Failure h =
+        failureOf(kView + "p 5\n0.0 0.0 0.0 1.0 0.0 0.0 1.0 1.0 0.0 0.0 1.0 0.0\n");
+    CHECK(h.line == 9);
+    CHECK(contains(h.message, "unexpected end of file: truncated polygon: expected 5 vertices of 3 "
+                              "numbers (x y z), got 12 numbers ('p' starts on line 8)"));
 }
 
 TEST_CASE("nff: loadScene dispatches .nff and reports the file name") {

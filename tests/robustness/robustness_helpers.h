@@ -218,6 +218,12 @@ inline void checkRefused(const RunResult& r, const Scratch& dir,
         CHECK(startsWith(errLines[0], "raylab: error: " + location));
         CHECK(contains(errLines[0], fragment));
         CHECK(errLines[0].size() < 400);  // one readable line, not a dump of the input
+        // No raw control bytes from the input: an ESC sequence or a carriage
+        // return would rewrite the terminal line instead of showing it.
+        for (char c : errLines[0]) {
+            const unsigned char u = static_cast<unsigned char>(c);
+            CHECK_MESSAGE((u >= 0x20 && u != 0x7f), "raw control byte in the error line");
+        }
     }
     std::vector<std::string> expected = inputs;
     std::sort(expected.begin(), expected.end());

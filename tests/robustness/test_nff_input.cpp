@@ -45,11 +45,13 @@ TEST_CASE("nff: binary garbage is refused on its first line") {
 }
 
 TEST_CASE("nff: a file truncated in the middle of an entity names the last line") {
-    // Line 9 is "s 0 0"; the radius never comes.
+    // Line 8 is "s 0 0"; the radius never comes.
     refused(kView + "s 0 0", 8, "unexpected end of file");
     // A polygon announcing 4 vertices with only 2: "p 4" on line 8, cut on line 10.
     refused(kView + "p 4\n0 0 0\n1 0 0\n", 8, "exceeds what the file holds");
-    refused(kView + "p 3\n0 0 0\n1 0 0\n0 1", 10, "unexpected end of file");
+    // Cut in the third vertex (line 11): the message points there and names
+    // the line where the polygon started.
+    refused(kView + "p 3\n0 0 0\n1 0 0\n0 1", 11, "line 8");
     refused(kView + "f 1 0 0 1", 8, "unexpected end of file");
 }
 
@@ -81,7 +83,8 @@ TEST_CASE("nff: impossible primitives are refused at their line") {
     refused(kView + "s 0 0 0 0\n", 8, "");               // zero radius
     refused(kView + "c\n0 0 0 1\n0 0 0 1\n", 8, "");      // cone with base == apex
     refused(kView + "c\n0 0 0 0\n0 1 0 0\n", 8, "");      // cone with both radii 0
-    refused(kView + "f 1 1 1 1 0 0 0 0\n", 8, "index of refraction");
+    // ior 0 is SPD's "opaque"; with T > 0 it is an error.
+    refused(kView + "f 1 1 1 1 0 0 0.5 0\n", 8, "index of refraction");
     refused(kView + "hither -1\n", 8, "hither");
     refused(kView + "sphere 0 0 0 1\n", 8, "unknown entity 'sphere'");
 }
@@ -99,8 +102,11 @@ TEST_CASE("nff: a degenerate camera is refused at the line that makes it so") {
 }
 
 TEST_CASE("nff: a patch with a zero-length vertex normal is refused") {
-    // normalize(0, 0, 0) is NaN: the shading normal of every hit would be NaN.
-    refused(kView + "pp 3\n0 0 0 0 0 0\n1 0 0 0 0 1\n0 1 0 0 0 1\n", 8, "normal");
+    // A zero normal has no direction: refused at the vertex's line, for
+    // triangles (one mesh) and larger patches (the polygon primitive) alike.
+    refused(kView + "pp 3\n0 0 0 0 0 0\n1 0 0 0 0 1\n0 1 0 0 0 1\n", 9, "normal");
+    refused(kView + "pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 0\n0 1 0 0 0 1\n", 11,
+            "normal");
 }
 
 TEST_CASE("nff: UTF-16 files are refused, a UTF-8 BOM and CRLF line ends are accepted") {
@@ -139,7 +145,7 @@ TEST_CASE("nff: very long lines neither hang nor flood the terminal") {
     for (int i = 0; i < 200000; ++i) line += "s " + std::to_string(i % 100) + " 0 -5 0.1 ";
     rendered(kView + line + "\n");
     // A 1 MB token where a number belongs: refused, and the message stays short.
-    refused(kView + "s 0 0 0 " + std::string(1 << 20, '7') + "x\n", 8, "expected a number");
+    refused(kView + "s 0 0 0 " + std::string(1 << 20, '7') + "x\n", 8, "'7777");
     refused(kView + std::string(1 << 20, 'q') + "\n", 8, "unknown entity");
 }
 

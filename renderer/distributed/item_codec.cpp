@@ -1,0 +1,132 @@
+#include "renderer/distributed/item_codec.h"
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace raylab {
+
+namespace {
+
+// Per pixel: rgba (4) + depth (1) + normal (3) + albedo (3) + objectId (1) floats.
+constexpr size_t kPixelBytes = 12 * sizeof(float);
+// Per corner: colour (3 doubles), hit (1 byte), distance (float),
+// normal (3 doubles), albedo (3 doubles), objectId (float).
+constexpr size_t kCornerBytes = 3 * 8 + 1 + 4 + 3 * 8 + 3 * 8 + 4;
+
+}  // namespace
+
+ItemCodec::ItemCodec(const FrameRenderer& frame, const RenderOptions& options)
+    : m_frame(frame), m_spd(options.spd) {}
+
+size_t ItemCodec::payloadBytes(int item) const {
+    const WorkRegion r = m_frame.region(item);
+    const size_t n = size_t(r.x1 - r.x0) * size_t(r.y1 - r.y0);
+    return n * (m_spd ? kCornerBytes : kPixelBytes);
+}
+
+size_t ItemCodec::itemBytes(int item) const { return sizeof(int32_t) + payloadBytes(item); }
+
+void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned char>& out) const {
+    const WorkRegion r = m_frame.region(item);
+    out.reserve(out.size() + itemBytes(item));
+    ByteWriter w(out);
+    w.put(int32_t(item));
+    if (m_spd) {
+        const size_t cw = size_t(from.film.width) + 1;
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const Sample& s = from.corners[size_t(y) * cw + size_t(x)];
+                w.put(s.c.r);
+                w.put(s.c.g);
+                w.put(s.c.b);
+                w.put(uint8_t(s.first.hit ? 1 : 0));
+                w.put(s.first.distance);
+                w.put(s.first.normal.x);
+                w.put(s.first.normal.y);
+                w.put(s.first.normal.z);
+                w.put(s.first.albedo.r);
+                w.put(s.first.albedo.g);
+                w.put(s.first.albedo.b);
+                w.put(s.first.objectId);
+            }
+        }
+        return;
+    }
+    const Film& f = from.film;
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            const size_t i = f.index(x, y);
+            w.putBytes(&f.rgba[4 * i], 4 * sizeof(float));
+            w.putBytes(&f.depth[i], sizeof(float));
+            w.putBytes(&f.normal[3 * i], 3 * sizeof(float));
+            w.putBytes(&f.albedo[3 * i], 3 * sizeof(float));
+            w.putBytes(&f.objectId[i], sizeof(float));
+        }
+    }
+}
+
+void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& items) const {
+    while (!in.done()) {
+        const int item = in.get<int32_t>();
+        if (item < 0 || item >= m_frame.workItemCount())
+            throw std::runtime_error("message names work item " + std::to_string(item) +
+                                     " of a frame with " +
+                                     std::to_string(m_frame.workItemCount()));
+        // Check the whole item first: a truncated message changes nothing.
+        if (in.left() < payloadBytes(item)) throw std::runtime_error("message is truncated");
+        const WorkRegion r = m_frame.region(item);
+        if (m_spd) {
+            const size_t cw = size_t(to.film.width) + 1;
+            for (int y = r.y0; y < r.y1; ++y) {
+                for (int x = r.x0; x < r.x1; ++x) {
+                    Sample& s = to.corners[size_t(y) * cw + size_t(x)];
+                    s.c.r = in.get<double>();
+                    s.c.g = in.get<double>();
+                    s.c.b = in.get<double>();
+                    s.first.hit = in.get<uint8_t>() != 0;
+                    s.first.distance = in.get<float>();
+                    s.first.normal.x = in.get<double>();
+                    s.first.normal.y = in.get<double>();
+                    s.first.normal.z = in.get<double>();
+                    s.first.albedo.r = in.get<double>();
+                    s.first.albedo.g = in.get<double>();
+                    s.first.albedo.b = in.get<double>();
+                    s.first.objectId = in.get<float>();
+                }
+            }
+        } else {
+            Film& f = to.film;
+            for (int y = r.y0; y < r.y1; ++y) {
+                for (int x = r.x0; x < r.x1; ++x) {
+                    const size_t i = f.index(x, y);
+                    in.getBytes(&f.rgba[4 * i], 4 * sizeof(float));
+                    in.getBytes(&f.depth[i], sizeof(float));
+                    in.getBytes(&f.normal[3 * i], 3 * sizeof(float));
+                    in.getBytes(&f.albedo[3 * i], 3 * sizeof(float));
+                    in.getBytes(&f.objectId[i], sizeof(float));
+                }
+            }
+        }
+        items.push_back(item);
+    }
+}
+
+void appendCounters(const WorkCounters& c, std::vector<unsigned char>& out) {
+    ByteWriter w(out);
+    for (const auto& perType : c.rays.byDepth)
+        for (uint64_t n : perType) w.put(n);
+    w.put(c.rays.cameraHits);
+    w.put(c.nonFinite);
+}
+
+WorkCounters readCounters(ByteReader& in) {
+    WorkCounters c;
+    for (auto& perType : c.rays.byDepth)
+        for (uint64_t& n : perType) n = in.get<uint64_t>();
+    c.rays.cameraHits = in.get<uint64_t>();
+    c.nonFinite = in.get<uint64_t>();
+    return c;
+}
+
+}  // namespace raylab

@@ -1,0 +1,226 @@
+// `mpirun -np 2 raylab render` against `raylab render`: the files rank 0
+// writes, sequences, and how failed ranks are reported. These cases start
+// mpirun themselves; they run only when RAYLAB_MPIRUN names it (set by the
+// ctest entry in tests/distributed/mpi_tests.cmake), never under mpirun.
+
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "distributed_test_helpers.h"
+#include "renderer/io/exr_reader.h"
+
+using namespace raylab;
+
+namespace {
+
+const auto kWithMpirun = doctest::skip(std::getenv("RAYLAB_MPIRUN") == nullptr);
+
+struct Run {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+/// A scratch directory, removed at the end of the test case.
+class Scratch {
+public:
+    Scratch() {
+        static std::atomic<int> counter{0};
+        m_dir = std::filesystem::temp_directory_path() /
+                ("raylab_mpi_cli_" + std::to_string(long(getpid())) + "_" +
+                 std::to_string(counter++));
+        std::filesystem::remove_all(m_dir);
+        std::filesystem::create_directories(m_dir);
+    }
+    ~Scratch() {
+        std::error_code ec;
+        std::filesystem::remove_all(m_dir, ec);
+    }
+    std::string operator()(const std::string& name) const { return (m_dir / name).string(); }
+
+    /// Runs `command` through the shell, capturing its exit code and output.
+    Run run(const std::string& command) const {
+        const std::string cmd = command + " >" + (*this)("stdout") + " 2>" + (*this)("stderr") +
+                                " </dev/null";
+        const int status = std::system(cmd.c_str());
+        Run r;
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        r.out = slurp((*this)("stdout"));
+        r.err = slurp((*this)("stderr"));
+        return r;
+    }
+
+private:
+    std::filesystem::path m_dir;
+};
+
+std::string raylabBinary() { return RAYLAB_BINARY; }
+
+/// "mpirun -np N <flags> raylab".
+std::string mpirunRaylab(int ranks) {
+    const char* flags = std::getenv("RAYLAB_MPIRUN_FLAGS");
+    return std::string(std::getenv("RAYLAB_MPIRUN")) + " -np " + std::to_string(ranks) + " " +
+           (flags ? flags : "") + " " + raylabBinary();
+}
+
+std::string demo() { return std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json"; }
+
+/// The "rays" object and camera_hits of a --stats file (everything but times).
+std::string rayStats(const std::string& json) {
+    const size_t a = json.find("\"rays\""), b = json.find("\"time_s\"");
+    REQUIRE(a != std::string::npos);
+    REQUIRE(b != std::string::npos);
+    return json.substr(a, b - a);
+}
+
+void checkSameExr(const std::string& a, const std::string& b) {
+    INFO(a << " vs " << b);
+    REQUIRE(std::filesystem::exists(a));
+    REQUIRE(std::filesystem::exists(b));
+    CHECK(test::filmDifference(readExr(a), readExr(b)) == "");
+}
+
+/// A small JSON scene with a camera path (no meshes, so it can live anywhere).
+const char* const kPathScene = R"({
+    "image": {"width": 48, "height": 32, "spp": 1, "depth": 4},
+    "camera": {"eye": [0, 2, 8], "look_at": [0, 0.8, 0], "fov": 40},
+    "camera_path": {
+        "interpolation": "catmull_rom",
+        "keyframes": [
+            {"frame": 1, "eye": [0, 2, 8], "look_at": [0, 0.8, 0]},
+            {"frame": 3, "eye": [5, 3, 6], "look_at": [0, 0.8, 0], "fov": 35}
+        ]
+    },
+    "background": [0.5, 0.6, 0.8],
+    "ambient": 0.1,
+    "lights": [{"type": "point", "position": [-4, 7, 5]}],
+    "materials": {
+        "mirror": {"kd": 0.1, "ks": 0.5, "shininess": 200, "km": 0.8},
+        "glass": {"kd": 0, "ks": 0.5, "shininess": 300, "km": 0.1, "kt": 0.9, "ior": 1.5},
+        "floor": {"kd": [0.8, 0.8, 0.7]}
+    },
+    "objects": [
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
+        {"type": "sphere", "center": [-1, 1, 0], "radius": 1, "material": "mirror"},
+        {"type": "sphere", "center": [1.2, 0.7, 1], "radius": 0.7, "material": "glass"}
+    ]
+})";
+
+}  // namespace
+
+TEST_CASE("mpirun cli: the demo image, PNG and ray counts equal one process" * kWithMpirun) {
+    const Scratch dir;
+    const std::string flags = " --width 96 --height 72 --spp 2 --float ";
+    const Run one = dir.run(raylabBinary() + " render " + demo() + flags + "--threads 2 -o " +
+                            dir("one.exr") + " --png " + dir("one.png") + " --stats " +
+                            dir("one.json") + " --quiet");
+    REQUIRE_MESSAGE(one.exitCode == 0, one.err);
+    const Run two = dir.run(mpirunRaylab(2) + " render " + demo() + flags + "--threads 1 -o " +
+                            dir("two.exr") + " --png " + dir("two.png") + " --stats " +
+                            dir("two.json"));
+    REQUIRE_MESSAGE(two.exitCode == 0, two.err);
+    checkSameExr(dir("one.exr"), dir("two.exr"));
+    CHECK(slurp(dir("one.png")) == slurp(dir("two.png")));
+    CHECK(rayStats(slurp(dir("one.json"))) == rayStats(slurp(dir("two.json"))));
+    // One summary (rank 0's) with the per-rank table; 96x72 pixels = 6x5 tiles.
+    CHECK(two.out.find("ranks:    2 ranks, 30 tiles") != std::string::npos);
+    CHECK(two.out.find("rank 1 (") != std::string::npos);
+    CHECK(two.out.find("raylab: 96x72") == two.out.rfind("raylab: 96x72"));
+}
+
+TEST_CASE("mpirun cli: an SPD render equals one process" * kWithMpirun) {
+    const Scratch dir;
+    std::string scene = std::string(RAYLAB_SHARED_DIR) + "/scenes/spd/balls_s2.nff";
+    if (!std::filesystem::exists(scene)) {
+        scene = dir("spd.nff");
+        std::ofstream(scene) << "v\nfrom 0 1 -6\nat 0 0.5 0\nup 0 1 0\nangle 40\nhither 0.01\n"
+                                "resolution 64 64\nb 0.1 0.2 0.3\nl 3 5 -4\n"
+                                "f 0.9 0.2 0.2 0.6 0.4 20 0 1\ns -1 0.5 0 0.5\n"
+                                "f 0.8 0.8 0.9 0.1 0.6 100 0.8 1.5\ns 0.8 0.6 0.2 0.6\n";
+    }
+    const std::string flags = " --spd --width 64 --height 64 --float --quiet ";
+    const Run one = dir.run(raylabBinary() + " render " + scene + flags + "-o " + dir("one.exr") +
+                            " --stats " + dir("one.json"));
+    REQUIRE_MESSAGE(one.exitCode == 0, one.err);
+    const Run two = dir.run(mpirunRaylab(2) + " render " + scene + flags + "--threads 1 -o " +
+                            dir("two.exr") + " --stats " + dir("two.json"));
+    REQUIRE_MESSAGE(two.exitCode == 0, two.err);
+    checkSameExr(dir("one.exr"), dir("two.exr"));
+    CHECK(rayStats(slurp(dir("one.json"))) == rayStats(slurp(dir("two.json"))));
+}
+
+TEST_CASE("mpirun cli: --frames writes a numbered sequence equal to one process" * kWithMpirun) {
+    const Scratch dir;
+    std::ofstream(dir("path.json")) << kPathScene;
+    const std::string args = " render " + dir("path.json") + " --frames 1:3 --float --quiet ";
+    const Run one = dir.run(raylabBinary() + args + "-o " + dir("one.exr"));
+    REQUIRE_MESSAGE(one.exitCode == 0, one.err);
+    const Run two = dir.run(mpirunRaylab(2) + args + "--threads 1 -o " + dir("two.exr") +
+                            " --png " + dir("two.png"));
+    REQUIRE_MESSAGE(two.exitCode == 0, two.err);
+    for (const char* n : {"_0001", "_0002", "_0003"}) {
+        checkSameExr(dir(std::string("one") + n + ".exr"), dir(std::string("two") + n + ".exr"));
+        CHECK(std::filesystem::exists(dir(std::string("two") + n + ".png")));
+    }
+    CHECK_FALSE(std::filesystem::exists(dir("two.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir("two_0004.exr")));
+    // The camera moves: the first and last frames differ.
+    CHECK(test::filmDifference(readExr(dir("two_0001.exr")), readExr(dir("two_0003.exr"))) ==
+          "rgba");
+    // A single frame of the sequence renders the same picture on its own.
+    const Run single = dir.run(raylabBinary() + " render " + dir("path.json") +
+                               " --frames 2 --float --quiet -o " + dir("single.exr"));
+    REQUIRE_MESSAGE(single.exitCode == 0, single.err);
+    checkSameExr(dir("single_0002.exr"), dir("two_0002.exr"));
+}
+
+TEST_CASE("mpirun cli: --frames needs a camera_path" * kWithMpirun) {
+    const Scratch dir;
+    const Run r = dir.run(raylabBinary() + " render " + std::string(RAYLAB_SOURCE_DIR) +
+                          "/scenes/primitives.json --frames 1:2 -o " + dir("x.exr"));
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.find("--frames needs a \"camera_path\" in the scene") != std::string::npos);
+    const Run usage = dir.run(raylabBinary() + " render " + demo() + " --frames 5:2 -o " + dir("x.exr"));
+    CHECK(usage.exitCode == 2);
+    CHECK(usage.err.find("--frames: expected FIRST:LAST") != std::string::npos);
+}
+
+TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is written" *
+          kWithMpirun) {
+    const Scratch dir;
+    const Run r = dir.run("RAYLAB_MPI_FAULT=stall:1 RAYLAB_MPI_TIMEOUT=2 " + mpirunRaylab(2) +
+                          " render " + demo() + " --width 64 --height 48 --threads 1 --quiet -o " +
+                          dir("x.exr"));
+    CHECK(r.exitCode != 0);
+    CHECK_MESSAGE(r.err.find("raylab: error: rank 1 sent nothing for 2 s while holding ") !=
+                      std::string::npos,
+                  r.err);
+    CHECK_FALSE(std::filesystem::exists(dir("x.exr")));
+}
+
+TEST_CASE("mpirun cli: a killed rank ends the job, nothing is written" * kWithMpirun) {
+    const Scratch dir;
+    const Run r = dir.run("RAYLAB_MPI_FAULT=kill:1 " + mpirunRaylab(2) + " render " + demo() +
+                          " --width 64 --height 48 --threads 1 --quiet -o " + dir("x.exr"));
+    CHECK(r.exitCode != 0);
+    // Open MPI: "... exited on signal 9 (Killed)"; MPICH: "KILLED BY SIGNAL: 9".
+    CHECK_MESSAGE((r.err.find("signal 9") != std::string::npos ||
+                   r.err.find("SIGNAL: 9") != std::string::npos),
+                  r.err);
+    CHECK_FALSE(std::filesystem::exists(dir("x.exr")));
+}

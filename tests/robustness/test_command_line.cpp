@@ -1,0 +1,112 @@
+// Bad command lines and bad output paths through the real binary: usage
+// errors exit 2 with one line, unwritable outputs exit 1 with one line, and
+// an existing output file is never replaced by a failed or partial render.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "robustness_helpers.h"
+
+using namespace raylab::robust;
+
+namespace {
+
+const std::string kScene =
+    "{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+    " \"lights\": [{\"type\": \"point\", \"position\": [2, 3, 4]}],\n"
+    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
+
+}  // namespace
+
+TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit 2)") {
+    const std::vector<std::vector<std::string>> bad = {
+        {"--width", "1000000000"}, {"--width", "0"},        {"--width", "-8"},
+        {"--width", "8.5"},        {"--width", ""},         {"--width", "8x"},
+        {"--width", "99999999999999999999999"},             {"--height", "0x10"},
+        {"--spp", "0"},            {"--spp", "-1"},         {"--depth", "0"},
+        {"--depth", "1000000"},    {"--threads", "0"},      {"--threads", "-2"},
+        {"--exposure", "nan"},     {"--exposure", "inf"},   {"--exposure", "1e400"},
+        {"--epsilon", "-1"},       {"--epsilon", "inf"},    {"--min-weight", "2"},
+        {"--seed", "-1"},          {"--adaptive", "nan"},   {"--accel", "bvh"},
+        {"--precision", "half"},   {"--bogus"},             {"--width"},
+    };
+    for (const std::vector<std::string>& flags : bad) {
+        Scratch dir;
+        const std::string scene = dir.write("scene.json", kScene);
+        std::vector<std::string> args{"render", scene, "-o", dir.file("out.exr"), "--quiet"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        std::string shown;
+        for (const std::string& f : flags) shown += f + " ";
+        CAPTURE(shown);
+        checkRefused(runRaylab(args), dir, {"scene.json"}, 2, "", "");
+    }
+}
+
+TEST_CASE("command line: missing or unreadable scenes are input errors (exit 1)") {
+    Scratch dir;
+    const std::string out = dir.file("out.exr");
+    checkRefused(runRaylab({"render", dir.file("missing.json"), "-o", out}), dir, {}, 1,
+                 dir.file("missing.json") + ":", "cannot open");
+    std::filesystem::create_directories(dir.file("folder.json"));
+    checkRefused(runRaylab({"render", dir.file("folder.json"), "-o", out}), dir, {}, 1,
+                 dir.file("folder.json") + ":", "directory");
+    dir.write("scene.txt", kScene);
+    checkRefused(runRaylab({"render", dir.file("scene.txt"), "-o", out}), dir, {"scene.txt"}, 1,
+                 dir.file("scene.txt") + ":", "unknown scene format");
+    dir.write("noext", kScene);
+    checkRefused(runRaylab({"render", dir.file("noext"), "-o", out}), dir,
+                 {"noext", "scene.txt"}, 1, dir.file("noext") + ":", "no file extension");
+}
+
+TEST_CASE("command line: unwritable outputs fail with one line and leave no temporary file") {
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    const std::vector<std::string> tiny{"--width", "8", "--height", "8", "--quiet"};
+    auto args = [&](std::vector<std::string> a) {
+        a.insert(a.begin(), {"render", scene});
+        a.insert(a.end(), tiny.begin(), tiny.end());
+        return a;
+    };
+    // The EXR's folder does not exist.
+    checkRefused(runRaylab(args({"-o", dir.file("no/such/dir/out.exr")})), dir, {"scene.json"},
+                 1, dir.file("no/such/dir/out.exr") + ":", "cannot write");
+    // The output name is an existing directory.
+    std::filesystem::create_directories(dir.file("taken.exr"));
+    checkRefused(runRaylab(args({"-o", dir.file("taken.exr")})), dir, {"scene.json"}, 1,
+                 dir.file("taken.exr") + ":", "");
+    std::filesystem::remove(dir.file("taken.exr"));
+    // The stats file cannot be written.
+    const RunResult stats =
+        runRaylab(args({"-o", dir.file("a.exr"), "--stats", dir.file("no/dir/s.json")}));
+    CAPTURE(stats.err);
+    CHECK(stats.exitCode == 1);
+    CHECK(lines(stats.err).size() == 1);
+    CHECK(startsWith(stats.err, "raylab: error: " + dir.file("no/dir/s.json") + ":"));
+    for (const std::string& f : dir.files()) CHECK_FALSE(contains(f, ".tmp."));
+}
+
+TEST_CASE("command line: a failed render never touches an existing output file") {
+    Scratch dir;
+    const std::string old = "previous render, must survive";
+    dir.write("out.exr", old);
+    dir.write("out.png", old);
+    const std::string bad = dir.write("bad.json", "{\"camera\": {\"eye\": [0, 0, 5]}}");
+    const RunResult r = runRaylab(tinyRender(dir, bad));
+    checkRefused(r, dir, {"bad.json", "out.exr", "out.png"}, 1, bad + ":1:", "look_at");
+    CHECK(readFile(dir.file("out.exr")) == old);
+    CHECK(readFile(dir.file("out.png")) == old);
+}
+
+TEST_CASE("command line: --width 65536 --height 65536 is refused by the memory guard") {
+    const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    // 65536^2 pixels x 48 floats of film and encoder copies: about 824 GB.
+    if (memory > 0.5e12) return;  // a machine that big would start the render
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    const RunResult r = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", "65536",
+                                   "--height", "65536", "--quiet"},
+                                  30);
+    checkRefused(r, dir, {"scene.json"}, 1, scene + ":", "MiB");
+    CHECK(r.seconds < 10);  // refused up front, not after allocating
+}

@@ -1,0 +1,145 @@
+// Bad OBJ/MTL input through the real binary (`raylab render mesh.obj`):
+// refused with one "raylab: error: FILE:LINE: ..." line and exit 1, nothing
+// written; a missing MTL or texture is only a warning. Renders are 8x8.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "robustness_helpers.h"
+
+using namespace raylab::robust;
+
+namespace {
+
+const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+void refused(const std::string& obj, int line, const std::string& fragment,
+             const std::vector<std::pair<std::string, std::string>>& files = {}) {
+    Scratch dir;
+    std::vector<std::string> inputs{"mesh.obj"};
+    for (const auto& [name, body] : files) {
+        dir.write(name, body);
+        inputs.push_back(name);
+    }
+    const std::string path = dir.write("mesh.obj", obj);
+    checkRefused(runRaylab(tinyRender(dir, path)), dir, inputs, 1,
+                 path + ":" + (line > 0 ? std::to_string(line) + ":" : ""), fragment);
+}
+
+/// Renders; returns stderr (the warnings) for further checks.
+std::string rendered(const std::string& obj,
+                     const std::vector<std::pair<std::string, std::string>>& files = {}) {
+    Scratch dir;
+    std::vector<std::string> inputs{"mesh.obj"};
+    for (const auto& [name, body] : files) {
+        dir.write(name, body);
+        inputs.push_back(name);
+    }
+    const std::string path = dir.write("mesh.obj", obj);
+    const RunResult r = runRaylab(tinyRender(dir, path));
+    checkRendered(r, dir, inputs);
+    return r.err;
+}
+
+}  // namespace
+
+TEST_CASE("obj: empty files, binary garbage and files without faces are refused") {
+    refused("", 0, "no triangles");
+    refused("# nothing but a comment\n\n", 0, "no triangles");
+    refused(std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00\x00\xff\xfe", 14), 0, "");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\n", 0, "no triangles");
+    refused("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n", 0, "no triangles");  // zero area only
+}
+
+TEST_CASE("obj: a file truncated in the middle of a face is refused or stops cleanly") {
+    // "f 1 2" is a face with two corners: it has no triangle.
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2", 0, "no triangles");
+    // Cut inside an index: "f 1 2 3" becomes "f 1 2 " (trailing blank).
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 ", 0, "no triangles");
+}
+
+TEST_CASE("obj: face indices out of range are refused at the face's line") {
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", 4, "vertex 4");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", 4, "vertex 0");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", 4, "vertex -4");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n", 4, "vertex");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -99999999999999999999\n", 4, "vertex");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n", 5, "normal 2");
+    // A relative index that is fine for the whole file but not at its line.
+    refused("v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n", 2, "vertex -2");
+    // A huge polygon whose last corner is out of range.
+    std::string big = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (int i = 0; i < 100000; ++i) big += " " + std::to_string(i % 3 + 1);
+    refused(big + " 5\n", 4, "vertex 5");
+}
+
+TEST_CASE("obj: NaN, infinite and overflowing vertices are refused") {
+    refused("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", 2, "not finite");
+    refused("v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n", 2, "not finite");
+    refused("v 0 0 0\nv 1 0 1e400\nv 0 1 0\nf 1 2 3\n", 2, "not finite");
+    // Finite vertices whose bounding box overflows: the auto-framed camera
+    // cannot be placed. Refused as bad input naming the file, not as an
+    // internal camera error.
+    refused("v 0 0 0\nv 1e308 0 0\nv 1e308 1e-300 0\nf 1 2 3\n", 0, "");
+    refused("v -1.7e308 0 0\nv 1.7e308 0 0\nv 0 1e300 0\nf 1 2 3\n", 0, "");
+}
+
+TEST_CASE("obj: broken MTL files are refused naming the material") {
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 0, "material 'a'",
+            {{"m.mtl", "newmtl a\nKd nan 0 0\n"}});
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 0, "material 'a'",
+            {{"m.mtl", "newmtl a\nKd -1 0 0\n"}});
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 0, "Ns",
+            {{"m.mtl", "newmtl a\nNs -5\n"}});
+}
+
+TEST_CASE("obj: a missing MTL library or texture is a warning and the render goes on") {
+    const std::string noMtl = rendered("mtllib missing.mtl\nusemtl red\n" + kTriangle);
+    CHECK(contains(noMtl, "raylab: warning: "));
+    const std::string noTexture = rendered(
+        "mtllib m.mtl\nusemtl red\n" + kTriangle,
+        {{"m.mtl", "newmtl red\nKd 1 0 0\nmap_Kd missing.png\nmap_Ks also_missing.png\n"}});
+    CHECK(contains(noTexture, "texture"));
+    // An unknown material name without any library: warning only.
+    rendered("usemtl nothing_defines_me\n" + kTriangle);
+}
+
+TEST_CASE("obj: UTF-16 files are refused, CRLF line ends are accepted") {
+    std::string le = "\xff\xfe";
+    for (char c : kTriangle) {
+        le += c;
+        le += '\0';
+    }
+    refused(le, 0, "");
+    std::string crlf;
+    for (char c : "o tri\n" + kTriangle) {
+        if (c == '\n') crlf += '\r';
+        crlf += c;
+    }
+    rendered(crlf);
+    // Line numbers with CRLF: the bad face is on line 4.
+    std::string crlfBad;
+    for (char c : std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")) {
+        if (c == '\n') crlfBad += '\r';
+        crlfBad += c;
+    }
+    refused(crlfBad, 4, "vertex 9");
+}
+
+TEST_CASE("obj: very long lines and huge faces neither hang nor crash") {
+    // A 4 MB comment line, then a triangle.
+    rendered("# " + std::string(4 << 20, 'c') + "\n" + kTriangle);
+    // A 200000-corner polygon (a fan around a circle), triangulated.
+    std::string ngon;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        const double a = 6.283185307179586 * i / n;
+        ngon += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    }
+    ngon += "f";
+    for (int i = 1; i <= n; ++i) ngon += " " + std::to_string(i);
+    rendered(ngon + "\n");
+    // A 1 MB token on a vertex line.
+    refused("v 0 0 0\nv 1 0 " + std::string(1 << 20, '9') + "\nv 0 1 0\nf 1 2 3\n", 2, "");
+}
