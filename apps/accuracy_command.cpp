@@ -32,22 +32,26 @@ const char* const kAccuracyHelp =
     "self-intersection offset), then sweeps each accuracy knob alone from the renderer's\n"
     "defaults (1 spp, depth 5, double, robust offset, medium BVH), plus a few combinations:\n"
     "  spp         4, 16 samples per pixel\n"
-    "  adaptive    Whitted adaptive supersampling, thresholds 0.1, 0.03, 0.01 (2 levels; 0.01 with 3)\n"
+    "  adaptive    Whitted adaptive supersampling, thresholds 0.1, 0.03, 0.01 (2 levels; 0.01 with "
+    "3)\n"
     "  depth       ray-tree depth 1, 2, 3, 4, 6, 8, 12\n"
     "  min-weight  Hall-Greenberg pruning 0.01, 0.05, 0.1, 0.3 at depth 12\n"
     "  precision   float instead of double analytic intersectors\n"
     "  offset      fixed epsilon 1e-2, 1e-4, 1e-6 instead of the robust offset\n"
     "  bvh         Embree build quality low, high; robust traversal\n"
     "  combo       preview, spp 4 + depth 3, adaptive + pruning, spp 16 + depth 8 + robust\n"
-    "For each setting: build and render time (median of the runs, interleaved), rays traced,\n"
+    "For each setting: build and render time (wall clock and CPU time of all threads, medians\n"
+    "of the runs, interleaved), rays traced,\n"
     "RMSE, PSNR and largest channel error in linear RGB against the reference, pixels visibly\n"
     "off (more than 2/255 in 8-bit sRGB), the same two errors against the reference settings\n"
     "rendered at the setting's own sampling (\"ss\": the non-sampling knobs alone), and NaN/Inf\n"
-    "samples (must be 0). The scene file's own image settings are not used.\n"
+    "samples (must be 0). The Pareto front uses CPU time, which other processes on a shared\n"
+    "machine do not inflate. The scene file's own image settings are not used.\n"
     "\n"
     "options:\n"
     "  --width W, --height H   image size (default 160x120; 80x60 with --quick)\n"
-    "  --runs N                timed runs per setting, median reported (default 3; 1 with --quick)\n"
+    "  --runs N                timed runs per setting, median reported (default 3; 1 with "
+    "--quick)\n"
     "  --threads N             worker threads (default: all cores)\n"
     "  --reference-spp N       samples per pixel of the reference (default 64; 16 with --quick)\n"
     "  --knobs LIST            comma-separated knob groups to sweep (default: all); the default\n"
@@ -55,7 +59,7 @@ const char* const kAccuracyHelp =
     "  --visible L             visible-difference threshold in 8-bit sRGB levels (default 2)\n"
     "  --quick                 a ~20 s smoke run: fewer settings, smaller image, one run\n"
     "  --out FILE              results as CSV (.csv) or JSON (.json)\n"
-    "  --plot FILE             SVG plot of RMSE against frame time, Pareto front marked\n"
+    "  --plot FILE             SVG plot of RMSE against CPU time per frame, Pareto front marked\n"
     "  --quiet                 no progress bar and no table\n"
     "\n"
     "Exit status 1 when any rendered sample was NaN or Inf (after writing the outputs).\n";
@@ -92,22 +96,37 @@ AccuracyCli parseAccuracyArgs(const std::vector<std::string>& args) {
         if (a == "-h" || a == "--help") {
             std::fputs(kAccuracyHelp, stdout);
             std::exit(0);
-        } else if (a == "--width") cli.width = int(p.integer(a, 1, 8192));
-        else if (a == "--height") cli.height = int(p.integer(a, 1, 8192));
-        else if (a == "--runs") cli.runs = int(p.integer(a, 1, 1000));
-        else if (a == "--threads") cli.threads = int(p.integer(a, 1, 4096));
-        else if (a == "--reference-spp") cli.referenceSpp = int(p.integer(a, 1, 65536));
-        else if (a == "--visible") cli.visible = int(p.integer(a, 0, 254));
-        else if (a == "--knobs") cli.knobs = splitList(a, p.value(a));
-        else if (a == "--quick") cli.quick = true;
-        else if (a == "--quiet" || a == "-q") cli.quiet = true;
-        else if (a == "--out") cli.out = p.value(a);
-        else if (a == "--plot") cli.plot = p.value(a);
-        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
-        else if (cli.scene.empty()) cli.scene = a;
-        else throw UsageError("unexpected argument '" + a + "' (one scene per sweep)");
+        } else if (a == "--width")
+            cli.width = int(p.integer(a, 1, 8192));
+        else if (a == "--height")
+            cli.height = int(p.integer(a, 1, 8192));
+        else if (a == "--runs")
+            cli.runs = int(p.integer(a, 1, 1000));
+        else if (a == "--threads")
+            cli.threads = int(p.integer(a, 1, 4096));
+        else if (a == "--reference-spp")
+            cli.referenceSpp = int(p.integer(a, 1, 65536));
+        else if (a == "--visible")
+            cli.visible = int(p.integer(a, 0, 254));
+        else if (a == "--knobs")
+            cli.knobs = splitList(a, p.value(a));
+        else if (a == "--quick")
+            cli.quick = true;
+        else if (a == "--quiet" || a == "-q")
+            cli.quiet = true;
+        else if (a == "--out")
+            cli.out = p.value(a);
+        else if (a == "--plot")
+            cli.plot = p.value(a);
+        else if (!a.empty() && a[0] == '-')
+            throw UsageError("unknown option '" + a + "'");
+        else if (cli.scene.empty())
+            cli.scene = a;
+        else
+            throw UsageError("unexpected argument '" + a + "' (one scene per sweep)");
     }
-    if (cli.scene.empty()) throw UsageError("accuracy: missing SCENE (see 'raylab accuracy --help')");
+    if (cli.scene.empty())
+        throw UsageError("accuracy: missing SCENE (see 'raylab accuracy --help')");
     if (!cli.out.empty()) tableFormatOf(cli.out, "--out");  // reject a bad extension up front
     const std::vector<std::string> known = accuracyKnobNames();
     for (const std::string& k : cli.knobs) {
@@ -134,8 +153,9 @@ int accuracyCommand(const std::vector<std::string>& args) {
     options.threads = cli.threads;
     options.visibleLevels = cli.visible;
     for (AccuracySetting& s : accuracySweepSettings(cli.quick)) {
-        const bool wanted = cli.knobs.empty() || s.knob == "default" ||
-                            std::find(cli.knobs.begin(), cli.knobs.end(), s.knob) != cli.knobs.end();
+        const bool wanted =
+            cli.knobs.empty() || s.knob == "default" ||
+            std::find(cli.knobs.begin(), cli.knobs.end(), s.knob) != cli.knobs.end();
         if (wanted) options.settings.push_back(std::move(s));
     }
 
@@ -165,9 +185,9 @@ int accuracyCommand(const std::vector<std::string>& args) {
         nonFinite += n;
     }
     if (nonFinite) {
-        throw InputError(cli.scene, 0,
-                         std::to_string(nonFinite) + " NaN/Inf samples (first in setting '" +
-                             firstBad + "')");
+        throw InputError(
+            cli.scene, 0,
+            std::to_string(nonFinite) + " NaN/Inf samples (first in setting '" + firstBad + "')");
     }
     return 0;
 }

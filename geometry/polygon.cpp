@@ -69,6 +69,10 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
       m_dropAxis(dominantAxis(normal)),
       m_rule(rule),
       m_test(test) {
+    for (int k = 0; k < 3; ++k) {
+        m_coords[k].reserve(m_vertices.size());
+        m_coordsF[k].reserve(m_vertices.size());
+    }
     for (const Vec3& v : m_vertices) {
         m_bounds.expand(v);
         for (int k = 0; k < 3; ++k) {

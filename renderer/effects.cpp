@@ -33,7 +33,8 @@ EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
         for (size_t i = 0; i < scene.materials.size(); ++i) {
             if (!used[i]) continue;
             const Material& m = scene.materials[i];
-            if (!scene.lights.empty() && m.hasLocalShading()) e.kernel |= kShadows;
+            // SPD's procedure counts shadow rays from every surface.
+            if (!scene.lights.empty() && (m.hasLocalShading() || options.spd)) e.kernel |= kShadows;
             if (!scene.lights.empty() && !m.ks.isBlack()) e.kernel |= kHighlights;
             const bool spdReflects = options.spd && (!m.ks.isBlack() || m.transmissive());
             if (secondary && (m.reflective() || spdReflects)) e.kernel |= kReflection;

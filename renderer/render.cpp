@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -123,10 +124,14 @@ private:
     std::vector<bool> m_done;
 };
 
+/// A finite double that may exceed the float range, clamped so that storing
+/// it never creates an Inf.
+float toFiniteFloat(double v) { return float(std::clamp(v, -double(FLT_MAX), double(FLT_MAX))); }
+
 void storePixel(Film& film, size_t i, const Color& c, double coverage) {
-    film.rgba[4 * i + 0] = float(c.r);
-    film.rgba[4 * i + 1] = float(c.g);
-    film.rgba[4 * i + 2] = float(c.b);
+    film.rgba[4 * i + 0] = toFiniteFloat(c.r);
+    film.rgba[4 * i + 1] = toFiniteFloat(c.g);
+    film.rgba[4 * i + 2] = toFiniteFloat(c.b);
     film.rgba[4 * i + 3] = float(coverage);
 }
 

@@ -1,5 +1,7 @@
 #include "renderer/whitted_integrator.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "geometry/spawn.h"
@@ -36,7 +38,9 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
 }
 
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const {
-    const double tNear = m_scene.cameraNear / length(cameraRay.d);
+    // The near plane (NFF's hither) is a distance along the view axis.
+    const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
+    const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
     return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first);
 }
 
@@ -48,7 +52,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
     if constexpr ((E & kShadows) == 0) {
         return result;
     } else {
-        if (m_prune && !m.hasLocalShading()) return result;
+        // SPD counts shadow rays even from surfaces without a local term.
+        if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
         for (const Light& light : m_scene.lights) {
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
             double tMax;
@@ -97,7 +102,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
 
     if (first) {
         first->hit = true;
-        first->distance = float(hit->t * length(ray.d));
+        first->distance = float(std::min(hit->t * length(ray.d), double(FLT_MAX)));
         first->normal = si.ns;
         first->albedo = m.kd;
         first->objectId = float(si.object);
@@ -123,7 +128,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const std::optional<Vec3> t = refract(dir, n, etaI, etaT);
                 if (t) {
                     const double w = weight * m.kt.maxComponent();
-                    if (!m_prune || w >= m_options.minWeight) {
+                    if (!m_prune || m_options.spd || w >= m_options.minWeight) {
                         const SpawnedRay r = spawnRay(si.p, ng, *t, m_options.spawn);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
                                                   counters, nullptr);

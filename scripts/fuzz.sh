@@ -93,9 +93,9 @@ for t in "${targets[@]}"; do
     echo "fuzz_$t: FINDING (input saved under $crashes/):"
     grep -E "ERROR|SUMMARY|finding|deadly|timeout|out-of-memory|uncaught" "$log" | head -10
   fi
-  execs=$(grep -Eo 'stat::number_of_executed_units: [0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
-  rate=$(grep -Eo 'stat::average_exec_per_sec: [0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
-  rss=$(grep -Eo 'stat::peak_rss_mb: [0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
+  execs=$(grep -Eo 'stat::number_of_executed_units: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
+  rate=$(grep -Eo 'stat::average_exec_per_sec: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
+  rss=$(grep -Eo 'stat::peak_rss_mb: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
   size=$(find "$corpus" -type f | wc -l)
   cov=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || true)
   found=$(find "$crashes" -type f | wc -l)

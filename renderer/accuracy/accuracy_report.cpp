@@ -36,17 +36,22 @@ std::string padLeft(const std::string& s, size_t w) {
     return s.size() < w ? std::string(w - s.size(), ' ') + s : s;
 }
 
+/// Million rays per CPU-second of rendering (per core: on an idle machine a
+/// render on N threads traces about N times this per wall-clock second).
 double mrays(const AccuracyResult& r) {
-    return r.renderSeconds > 0 ? double(r.rays) / r.renderSeconds * 1e-6 : 0;
+    return r.renderCpuSeconds > 0 ? double(r.rays) / r.renderCpuSeconds * 1e-6 : 0;
 }
 
 const char* precisionName(Precision p) { return p == Precision::Float ? "float" : "double"; }
 
 const char* qualityName(AccelOptions::BvhQuality q) {
     switch (q) {
-        case AccelOptions::BvhQuality::Low: return "low";
-        case AccelOptions::BvhQuality::High: return "high";
-        default: return "medium";
+        case AccelOptions::BvhQuality::Low:
+            return "low";
+        case AccelOptions::BvhQuality::High:
+            return "high";
+        default:
+            return "medium";
     }
 }
 
@@ -78,8 +83,11 @@ std::string resultJson(const AccuracyResult& r, const std::string& indent) {
     add("render_ms_min", jsonNumber(r.renderMinSeconds * 1e3));
     add("render_ms_max", jsonNumber(r.renderMaxSeconds * 1e3));
     add("frame_ms", jsonNumber(r.frameSeconds() * 1e3));
+    add("build_cpu_ms", jsonNumber(r.buildCpuSeconds * 1e3));
+    add("render_cpu_ms", jsonNumber(r.renderCpuSeconds * 1e3));
+    add("frame_cpu_ms", jsonNumber(r.frameCpuSeconds() * 1e3));
     add("rays", std::to_string(r.rays));
-    add("mrays_per_s", jsonNumber(mrays(r)));
+    add("mrays_per_cpu_s", jsonNumber(mrays(r)));
     add("rmse", jsonNumber(r.rmse));
     add("psnr_db", jsonNumber(r.psnr));  // +inf (identical) is written as null
     add("max_error", jsonNumber(r.maxError));
@@ -108,20 +116,24 @@ std::string accuracyTable(const AccuracyReport& rep) {
                   ref.setting.flags().c_str(), ref.buildSeconds * 1e3, ref.renderSeconds * 1e3,
                   countText(ref.rays).c_str());
     out += line;
-    std::snprintf(line, sizeof line,
-                  "errors: linear RGB against the reference; visible = pixels more than %d/255 "
-                  "off in 8-bit sRGB (of %d);\n"
-                  "same-samples = against the reference settings at the setting's own sampling "
-                  "(the non-sampling knobs alone); * = Pareto front (frame time vs RMSE)\n\n",
-                  rep.visibleLevels, rep.width * rep.height);
+    std::snprintf(
+        line, sizeof line,
+        "errors: linear RGB against the reference; visible = pixels more than %d/255 "
+        "off in 8-bit sRGB (of %d);\n"
+        "same-samples = against the reference settings at the setting's own sampling "
+        "(the non-sampling knobs alone);\n"
+        "cpu ms = build + render CPU time of all threads (robust to other load), Mray/cpu-s "
+        "= rays per render CPU-second;\n* = Pareto front (cpu ms vs RMSE)\n\n",
+        rep.visibleLevels, rep.width * rep.height);
     out += line;
 
-    size_t nameWidth = 7;
-    for (const AccuracyResult& r : rep.results) nameWidth = std::max(nameWidth, r.setting.name.size());
+    size_t nameWidth = 9;
+    for (const AccuracyResult& r : rep.results)
+        nameWidth = std::max(nameWidth, r.setting.name.size() + 2);
     const std::vector<std::pair<const char*, size_t>> cols = {
-        {"build ms", 9}, {"render ms", 10}, {"rays", 8},    {"Mrays/s", 8},
-        {"RMSE", 9},     {"PSNR", 7},       {"max err", 8}, {"visible", 8},
-        {"ss RMSE", 9},  {"ss vis", 7},     {"NaN", 4},
+        {"build ms", 9},    {"render ms", 10}, {"cpu ms", 9}, {"rays", 8},
+        {"Mray/cpu-s", 11}, {"RMSE", 9},       {"PSNR", 7},   {"max err", 8},
+        {"visible", 8},     {"ss RMSE", 9},    {"ss vis", 7}, {"NaN", 4},
     };
     std::string header = padRight("setting", nameWidth);
     for (const auto& [name, w] : cols) header += padLeft(name, w);
@@ -136,6 +148,7 @@ std::string accuracyTable(const AccuracyReport& rep) {
         const std::vector<std::string> cells = {
             format("%.2f", r.buildSeconds * 1e3),
             format("%.1f", r.renderSeconds * 1e3),
+            format("%.1f", r.frameCpuSeconds() * 1e3),
             countText(r.rays),
             format("%.2f", mrays(r)),
             format("%.2e", r.rmse),
@@ -158,7 +171,8 @@ std::string accuracyCsv(const AccuracyReport& rep) {
     std::string out =
         "setting,knob,flags,spp,adaptive_threshold,adaptive_levels,depth,min_weight,precision,"
         "offset,epsilon,bvh_quality,robust,build_ms,render_ms,render_ms_min,render_ms_max,"
-        "frame_ms,rays,mrays_per_s,rmse,psnr_db,max_error,visible_pixels,"
+        "frame_ms,build_cpu_ms,render_cpu_ms,frame_cpu_ms,rays,mrays_per_cpu_s,rmse,psnr_db,"
+        "max_error,visible_pixels,"
         "same_samples_rmse,same_samples_visible_pixels,non_finite_samples,non_finite_pixels,"
         "deterministic,pareto\n";
     const auto row = [&](const AccuracyResult& r) {
@@ -182,6 +196,9 @@ std::string accuracyCsv(const AccuracyReport& rep) {
             jsonNumber(r.renderMinSeconds * 1e3),
             jsonNumber(r.renderMaxSeconds * 1e3),
             jsonNumber(r.frameSeconds() * 1e3),
+            jsonNumber(r.buildCpuSeconds * 1e3),
+            jsonNumber(r.renderCpuSeconds * 1e3),
+            jsonNumber(r.frameCpuSeconds() * 1e3),
             std::to_string(r.rays),
             jsonNumber(mrays(r)),
             jsonNumber(r.rmse),
@@ -229,7 +246,7 @@ PlotSpec accuracyPlot(const AccuracyReport& rep) {
     spec.title = "Error vs time: " + name + ", " + std::to_string(rep.width) + "x" +
                  std::to_string(rep.height) + ", " + std::to_string(rep.threads) + " thread" +
                  (rep.threads == 1 ? "" : "s");
-    spec.x.label = "frame time (build + render), ms";
+    spec.x.label = "CPU time per frame (build + render, all threads), ms";
     spec.x.log = true;
     spec.y.label = "RMSE (linear RGB)";
     spec.y.log = true;
@@ -245,7 +262,7 @@ PlotSpec accuracyPlot(const AccuracyReport& rep) {
         s.line = false;
         for (const AccuracyResult& r : rep.results)
             if (r.setting.knob == knob)
-                s.points.push_back({r.frameSeconds() * 1e3, r.rmse, r.pareto});
+                s.points.push_back({r.frameCpuSeconds() * 1e3, r.rmse, r.pareto});
         if (!s.points.empty()) {
             spec.series.push_back(std::move(s));
             ++group;
@@ -256,7 +273,7 @@ PlotSpec accuracyPlot(const AccuracyReport& rep) {
     for (const AccuracyResult& r : rep.results)
         if (r.pareto && r.rmse > 0) front.push_back(&r);
     std::sort(front.begin(), front.end(), [](const AccuracyResult* a, const AccuracyResult* b) {
-        return a->frameSeconds() < b->frameSeconds();
+        return a->frameCpuSeconds() < b->frameCpuSeconds();
     });
     if (!front.empty()) {
         PlotSeries f;
@@ -264,7 +281,8 @@ PlotSpec accuracyPlot(const AccuracyReport& rep) {
         f.color = "#444444";
         f.marker = PlotMarker::None;
         f.dashed = true;
-        for (const AccuracyResult* r : front) f.points.push_back({r->frameSeconds() * 1e3, r->rmse});
+        for (const AccuracyResult* r : front)
+            f.points.push_back({r->frameCpuSeconds() * 1e3, r->rmse});
         spec.series.push_back(std::move(f));
     }
     return spec;

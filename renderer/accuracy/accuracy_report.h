@@ -20,8 +20,8 @@ std::string accuracyCsv(const AccuracyReport& report);
 std::string accuracyJson(const AccuracyReport& report);
 
 /// \brief The error-vs-time plot: RMSE against the reference (log y) over the
-///   frame time (build + render, log x), one series per knob group, Pareto
-///   front highlighted and joined by a dashed line.
+///   CPU time of a frame (build + render, all threads; log x), one series per
+///   knob group, Pareto front highlighted and joined by a dashed line.
 PlotSpec accuracyPlot(const AccuracyReport& report);
 
 }  // namespace raylab

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -24,9 +25,12 @@ namespace {
 
 const char* qualityName(AccelOptions::BvhQuality q) {
     switch (q) {
-        case AccelOptions::BvhQuality::Low: return "low";
-        case AccelOptions::BvhQuality::High: return "high";
-        default: return "medium";
+        case AccelOptions::BvhQuality::Low:
+            return "low";
+        case AccelOptions::BvhQuality::High:
+            return "high";
+        default:
+            return "medium";
     }
 }
 
@@ -60,6 +64,8 @@ struct Rendered {
     Film film;
     double buildSeconds = 0;
     double renderSeconds = 0;
+    double buildCpuSeconds = 0;
+    double renderCpuSeconds = 0;
     uint64_t rays = 0;
     uint64_t nonFiniteSamples = 0;
     bool cancelled = false;
@@ -91,11 +97,14 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
 
     Rendered out;
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = processCpuSeconds();
     const std::unique_ptr<Accelerator> accel =
         makeAccelerator(options.accel, scene, options.accelOptions);
-    out.buildSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double c1 = processCpuSeconds();
+    out.buildCpuSeconds = c1 - c0;
     RenderResult r = render(scene, *accel, options, analyseEffects(scene, options), {}, cancel);
+    out.renderCpuSeconds = processCpuSeconds() - c1;
     out.cancelled = r.cancelled;
     out.renderSeconds = r.renderSeconds;
     out.rays = r.rays.total();
@@ -133,9 +142,7 @@ std::string AccuracySetting::flags() const {
     return f;
 }
 
-AccuracySetting defaultAccuracySetting() {
-    return named(AccuracySetting{}, "default", "default");
-}
+AccuracySetting defaultAccuracySetting() { return named(AccuracySetting{}, "default", "default"); }
 
 AccuracySetting referenceAccuracySetting(int spp) {
     AccuracySetting s;
@@ -146,8 +153,8 @@ AccuracySetting referenceAccuracySetting(int spp) {
 }
 
 std::vector<std::string> accuracyKnobNames() {
-    return {"default", "spp", "adaptive", "depth", "min-weight", "precision", "offset", "bvh",
-            "combo"};
+    return {"default",   "spp",    "adaptive", "depth", "min-weight",
+            "precision", "offset", "bvh",      "combo"};
 }
 
 std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
@@ -160,7 +167,8 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
     };
 
     const std::vector<int> spps = quick ? std::vector<int>{4} : std::vector<int>{4, 16};
-    for (int n : spps) add("spp", "spp " + std::to_string(n), [n](AccuracySetting& s) { s.spp = n; });
+    for (int n : spps)
+        add("spp", "spp " + std::to_string(n), [n](AccuracySetting& s) { s.spp = n; });
 
     const std::vector<double> thresholds =
         quick ? std::vector<double>{0.03} : std::vector<double>{0.1, 0.03, 0.01};
@@ -246,14 +254,20 @@ uint64_t countVisibleDifferences(const Film& a, const Film& b, int levels) {
     return n;
 }
 
+double processCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 void markParetoFront(std::vector<AccuracyResult>& results) {
     for (AccuracyResult& r : results) {
-        r.pareto = std::isfinite(r.rmse) && std::isfinite(r.frameSeconds());
+        r.pareto = std::isfinite(r.rmse) && std::isfinite(r.frameCpuSeconds());
         if (!r.pareto) continue;
         for (const AccuracyResult& o : results) {
             if (&o == &r || !std::isfinite(o.rmse)) continue;
-            const bool noWorse = o.frameSeconds() <= r.frameSeconds() && o.rmse <= r.rmse;
-            const bool better = o.frameSeconds() < r.frameSeconds() || o.rmse < r.rmse;
+            const bool noWorse = o.frameCpuSeconds() <= r.frameCpuSeconds() && o.rmse <= r.rmse;
+            const bool better = o.frameCpuSeconds() < r.frameCpuSeconds() || o.rmse < r.rmse;
             if (noWorse && better) {
                 r.pareto = false;
                 break;
@@ -264,8 +278,7 @@ void markParetoFront(std::vector<AccuracyResult>& results) {
 
 AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
                                 const AccuracySweepOptions& options,
-                                const AccuracyProgress& progress,
-                                const std::atomic<bool>* cancel) {
+                                const AccuracyProgress& progress, const std::atomic<bool>* cancel) {
     if (options.width < 1 || options.height < 1)
         throw std::invalid_argument("accuracy: image size must be at least 1x1");
     if (options.runs < 1) throw std::invalid_argument("accuracy: runs must be >= 1");
@@ -302,9 +315,20 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
         if (progress) progress(done, total, label);
         ++done;
     };
-    // Leaves the scene as loaded (double precision) whatever happens next.
+    // Every setting spells out every knob: the scene file's own "render"
+    // block must not leak into the sweep (an "epsilon" there could not be
+    // switched back to the robust offset by a flag). The guard puts it back,
+    // with double precision, whatever happens next.
+    struct SceneGuard {
+        Scene& scene;
+        RenderOverrides saved;
+        ~SceneGuard() {
+            scene.settings = saved;
+            applyPrecision(scene, Precision::Double);
+        }
+    } guard{scene, scene.settings};
+    scene.settings = RenderOverrides{};
     const auto finish = [&]() -> AccuracyReport {
-        applyPrecision(scene, Precision::Double);
         if (report.cancelled) report.results.clear();
         return std::move(report);
     };
@@ -316,8 +340,9 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     report.reference.setting = ref;
     report.reference.buildSeconds = reference.buildSeconds;
     report.reference.renderSeconds = reference.renderSeconds;
-    report.reference.renderMinSeconds = report.reference.renderMaxSeconds =
-        reference.renderSeconds;
+    report.reference.buildCpuSeconds = reference.buildCpuSeconds;
+    report.reference.renderCpuSeconds = reference.renderCpuSeconds;
+    report.reference.renderMinSeconds = report.reference.renderMaxSeconds = reference.renderSeconds;
     report.reference.rays = reference.rays;
     report.reference.psnr = HUGE_VAL;
     report.reference.nonFiniteSamples = reference.nonFiniteSamples;
@@ -334,6 +359,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
 
     // Interleaved rounds: run k of every setting before run k + 1 of any.
     std::vector<std::vector<double>> build(settings.size()), renderTimes(settings.size());
+    std::vector<std::vector<double>> buildCpu(settings.size()), renderCpu(settings.size());
     std::vector<Rendered> first(settings.size());
     std::vector<bool> deterministic(settings.size(), true);
     for (int run = 0; run < options.runs; ++run) {
@@ -344,6 +370,8 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
             if (report.cancelled) return finish();
             build[i].push_back(r.buildSeconds);
             renderTimes[i].push_back(r.renderSeconds);
+            buildCpu[i].push_back(r.buildCpuSeconds);
+            renderCpu[i].push_back(r.renderCpuSeconds);
             if (run == 0)
                 first[i] = std::move(r);
             else if (!sameRgba(first[i].film, r.film))
@@ -357,6 +385,8 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
         res.setting = settings[i];
         res.buildSeconds = median(build[i]);
         res.renderSeconds = median(renderTimes[i]);
+        res.buildCpuSeconds = median(buildCpu[i]);
+        res.renderCpuSeconds = median(renderCpu[i]);
         res.renderMinSeconds = *std::min_element(renderTimes[i].begin(), renderTimes[i].end());
         res.renderMaxSeconds = *std::max_element(renderTimes[i].begin(), renderTimes[i].end());
         res.rays = first[i].rays;

@@ -61,8 +61,8 @@ std::vector<std::string> accuracyKnobNames();
 struct AccuracySweepOptions {
     int width = 160;
     int height = 120;
-    int runs = 3;          ///< timed repetitions per setting (median reported), interleaved
-    int threads = 0;       ///< 0 = all cores
+    int runs = 3;     ///< timed repetitions per setting (median reported), interleaved
+    int threads = 0;  ///< 0 = all cores
     int referenceSpp = 64;
     /// Settings to measure; empty: accuracySweepSettings(false).
     std::vector<AccuracySetting> settings;
@@ -77,12 +77,18 @@ struct AccuracyResult {
     double buildSeconds = 0;   ///< median over the runs
     double renderSeconds = 0;  ///< median over the runs
     double renderMinSeconds = 0, renderMaxSeconds = 0;
-    uint64_t rays = 0;         ///< rays traced (all types), per render
+    /// CPU time of the whole process (all threads) for the build and the
+    /// render, medians: unlike wall-clock time it does not grow when other
+    /// processes compete for the cores, so it ranks settings reliably on a
+    /// shared machine (on an idle one wall ≈ CPU / threads).
+    double buildCpuSeconds = 0;
+    double renderCpuSeconds = 0;
+    uint64_t rays = 0;  ///< rays traced (all types), per render
     // Against the reference (the total error a user sees):
-    double rmse = 0;            ///< linear RGB, over every channel of every pixel
-    double psnr = 0;            ///< dB, peak 1.0; +inf when identical
-    double maxError = 0;        ///< largest |Δ| of one linear RGB channel
-    uint64_t visiblePixels = 0; ///< pixels off by more than visibleLevels in 8-bit sRGB
+    double rmse = 0;             ///< linear RGB, over every channel of every pixel
+    double psnr = 0;             ///< dB, peak 1.0; +inf when identical
+    double maxError = 0;         ///< largest |Δ| of one linear RGB channel
+    uint64_t visiblePixels = 0;  ///< pixels off by more than visibleLevels in 8-bit sRGB
     // Against the reference settings rendered with this setting's sampling
     // (same spp, same adaptive threshold): the error of every non-sampling
     // knob, without the aliasing this sample count has anyway. For the
@@ -94,8 +100,10 @@ struct AccuracyResult {
     bool deterministic = true;      ///< every run produced bit-identical RGBA
     bool pareto = false;            ///< on the error-vs-time Pareto front
 
-    /// Build plus render time: the cost of one frame.
+    /// Build plus render wall-clock time: what a user waits for one frame.
     double frameSeconds() const { return buildSeconds + renderSeconds; }
+    /// Build plus render CPU time: the work one frame costs.
+    double frameCpuSeconds() const { return buildCpuSeconds + renderCpuSeconds; }
 };
 
 /// The outcome of a sweep.
@@ -103,8 +111,8 @@ struct AccuracyReport {
     std::string scene;  ///< path given
     int width = 0, height = 0, runs = 0, threads = 0;
     int visibleLevels = 2;
-    std::string machine;        ///< CPU model and core count
-    AccuracyResult reference;   ///< its timings (one run) and rays; errors are 0
+    std::string machine;       ///< CPU model and core count
+    AccuracyResult reference;  ///< its timings (one run) and rays; errors are 0
     std::vector<AccuracyResult> results;
     bool cancelled = false;
 };
@@ -112,8 +120,9 @@ struct AccuracyReport {
 /// Progress: (renders done, renders in total, label of the current setting).
 using AccuracyProgress = std::function<void(int done, int total, const std::string& label)>;
 
-/// \brief Runs the sweep on `scene` (its shapes' precision is changed while
-///   sweeping and restored to double at the end).
+/// \brief Runs the sweep on `scene`. While it runs, the scene's own "render"
+///   block is set aside (every setting defines every knob) and its shapes'
+///   precision changes; both are restored (precision to double) at the end.
 /// \details Renders the reference once, then `runs` rounds over every
 ///   setting (interleaved, so drifts of a shared machine spread evenly), each
 ///   building a fresh Embree accelerator and rendering. Results are compared
@@ -134,7 +143,12 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
 uint64_t countVisibleDifferences(const Film& a, const Film& b, int levels);
 
 /// \brief Sets `pareto` on the results no other result beats: none has both a
-///   frame time <= and an RMSE <= with one of them strictly smaller.
+///   frame CPU time <= and an RMSE <= with one of them strictly smaller.
+///   Results with a non-finite RMSE are never on the front.
 void markParetoFront(std::vector<AccuracyResult>& results);
+
+/// CPU seconds used so far by the whole process, all threads
+/// (CLOCK_PROCESS_CPUTIME_ID).
+double processCpuSeconds();
 
 }  // namespace raylab

@@ -44,7 +44,8 @@ const char* const kBenchAccelHelp =
     "the size below which the naive loop is faster. Times are medians of --runs runs. Embree\n"
     "always renders the full frame; where a naive frame would take longer than --naive-budget,\n"
     "the naive loop traces every k-th pixel only (row-major, k coprime with the width) and the\n"
-    "table says \"1/k\". The default run takes about 3 minutes on 2 cores.\n"
+    "table says \"1/k\". Frame times are wall-clock, or with --threads 1 the working thread's\n"
+    "CPU time (robust on a shared machine). The default run takes about 3 minutes on 2 cores.\n"
     "\n"
     "options:\n"
     "  --width W, --height H   image size (default 256x256)\n"
@@ -95,14 +96,15 @@ struct Row {
 struct Settings {
     int width, height, runs, threads;
     double naiveBudget;
+    PhaseClock clock;  ///< CPU time of the working thread with one thread, else wall-clock
 };
 
 /// Traces the camera rays of every `stride`-th pixel (pixel centres, as
 /// render() does with spp 1) through the integrator, in parallel like
-/// render(); returns the wall time and adds the rays traced to `rays`.
+/// render(); returns the time on `clock`, the rays traced and the pixels.
 double renderPixelSample(const Scene& scene, const Accelerator& accel,
                          const RenderOptions& options, const EffectSet& effects, size_t stride,
-                         uint64_t& rays, size_t& pixels) {
+                         const PhaseClock& clock, uint64_t& rays, size_t& pixels) {
     const size_t total = size_t(options.width) * size_t(options.height);
     const size_t first = stride / 2;
     const size_t count = first < total ? (total - first + stride - 1) / stride : 0;
@@ -113,24 +115,35 @@ double renderPixelSample(const Scene& scene, const Accelerator& accel,
             tbb::global_control::max_allowed_parallelism, size_t(options.threads));
     const WhittedIntegrator integrator(scene, accel, options, effects);
     tbb::enumerable_thread_specific<RayCounters> counters;
-    const auto t0 = Clock::now();
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                          RayCounters& c = counters.local();
-                          for (size_t s = range.begin(); s != range.end(); ++s) {
-                              const size_t pixel = first + s * stride;
-                              const int x = int(pixel % size_t(options.width));
-                              const int y = int(pixel / size_t(options.width));
-                              const Ray ray = scene.camera.generateRay(
-                                  x + 0.5, y + 0.5, options.width, options.height);
-                              integrator.Li(ray, c, nullptr);
-                          }
-                      });
-    const double seconds = secondsSince(t0);
+    const double seconds = clock.time([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4),
+                          [&](const tbb::blocked_range<size_t>& range) {
+                              RayCounters& c = counters.local();
+                              for (size_t s = range.begin(); s != range.end(); ++s) {
+                                  const size_t pixel = first + s * stride;
+                                  const int x = int(pixel % size_t(options.width));
+                                  const int y = int(pixel / size_t(options.width));
+                                  const Ray ray = scene.camera.generateRay(
+                                      x + 0.5, y + 0.5, options.width, options.height);
+                                  integrator.Li(ray, c, nullptr);
+                              }
+                          });
+    });
     uint64_t n = 0;
     for (const RayCounters& c : counters) n += c.total();
     rays = n;
     return seconds;
+}
+
+/// One full frame through render(): the frame time on the settings' clock
+/// (wall-clock: the renderer's own RenderResult::renderSeconds; CPU time: the
+/// whole call) and the rays traced.
+double timeFrame(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                 const EffectSet& effects, const PhaseClock& clock, uint64_t& rays) {
+    RenderResult res;
+    const double cpu = clock.time([&] { res = render(scene, accel, options, effects); });
+    rays = res.rays.total();
+    return clock.cpu() ? cpu : res.renderSeconds;
 }
 
 /// Builds the named back end `runs` times; returns the last one and the
@@ -177,11 +190,8 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
             buildAccelerator("embree", scene, options, s.runs, row.embree.buildSeconds);
         render(scene, *accel, options, effects);
         std::vector<double> times;
-        for (int r = 0; r < s.runs; ++r) {
-            const RenderResult res = render(scene, *accel, options, effects);
-            times.push_back(res.renderSeconds);
-            row.embree.rays = res.rays.total();
-        }
+        for (int r = 0; r < s.runs; ++r)
+            times.push_back(timeFrame(scene, *accel, options, effects, s.clock, row.embree.rays));
         row.embree.renderSeconds = median(times);
         row.embree.pixels = pixels;
     }
@@ -202,16 +212,14 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
         uint64_t pilotRays = 0;
         size_t pilotCount = 0;
         const double pilotSeconds = renderPixelSample(scene, *accel, options, effects, pilotStride,
-                                                      pilotRays, pilotCount);
+                                                      s.clock, pilotRays, pilotCount);
         const double perRay = pilotSeconds / double(std::max<uint64_t>(1, pilotRays));
         const double fullEstimate = perRay * double(row.embree.rays);
         std::vector<double> times;
         if (fullEstimate <= s.naiveBudget) {
-            for (int r = 0; r < s.runs; ++r) {
-                const RenderResult res = render(scene, *accel, options, effects);
-                times.push_back(res.renderSeconds);
-                row.naive.rays = res.rays.total();
-            }
+            for (int r = 0; r < s.runs; ++r)
+                times.push_back(
+                    timeFrame(scene, *accel, options, effects, s.clock, row.naive.rays));
             row.naive.stride = 1;
             row.naive.pixels = pixels;
         } else {
@@ -219,7 +227,7 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
                 size_t(std::ceil(fullEstimate / s.naiveBudget)), options.width);
             for (int r = 0; r < s.runs; ++r)
                 times.push_back(renderPixelSample(scene, *accel, options, effects,
-                                                  row.naive.stride, row.naive.rays,
+                                                  row.naive.stride, s.clock, row.naive.rays,
                                                   row.naive.pixels));
         }
         row.naive.renderSeconds = median(times);
@@ -330,7 +338,7 @@ std::string csvTable(const std::vector<Row>& rows, const Settings& s, const std:
         "family,scene,parameter,primitives,embree_build_s,embree_frame_s,embree_rays,"
         "embree_mrays_per_s,embree_ns_per_ray,naive_build_s,naive_frame_s,naive_rays,"
         "naive_pixel_stride,naive_pixels,naive_mrays_per_s,naive_ns_per_ray,speedup,cpu,cores,"
-        "threads,width,height,runs\n";
+        "threads,width,height,runs,clock\n";
     for (const Row& r : rows) {
         t += csvField(r.family) + "," + csvField(r.scene) + "," + std::to_string(r.parameter) +
              "," + std::to_string(r.primitives) + "," + jsonNumber(r.embree.buildSeconds) + "," +
@@ -343,7 +351,8 @@ std::string csvTable(const std::vector<Row>& rows, const Settings& s, const std:
              jsonNumber(r.naive.nanosecondsPerRay()) + "," + jsonNumber(r.speedup()) + "," +
              csvField(cpu) + "," + std::to_string(logicalCores()) + "," +
              std::to_string(effectiveThreads(s.threads)) + "," + std::to_string(s.width) + "," +
-             std::to_string(s.height) + "," + std::to_string(s.runs) + "\n";
+             std::to_string(s.height) + "," + std::to_string(s.runs) + "," +
+             (s.clock.cpu() ? "thread_cpu" : "wall") + "\n";
     }
     return t;
 }
@@ -367,6 +376,7 @@ std::string jsonDocument(const std::vector<Row>& rows, const std::vector<Crossov
                     ", \"cores\": " + std::to_string(logicalCores()) +
                     ", \"load_average_start\": " + jsonNumber(loadStart) +
                     ", \"load_average_end\": " + jsonNumber(loadEnd) + "},\n";
+    j += "  \"clock\": " + std::string(s.clock.cpu() ? "\"thread_cpu\"" : "\"wall\"") + ",\n";
     j += "  \"threads\": " + std::to_string(effectiveThreads(s.threads)) +
          ",\n  \"width\": " + std::to_string(s.width) + ",\n  \"height\": " +
          std::to_string(s.height) + ",\n  \"runs\": " + std::to_string(s.runs) +
@@ -403,7 +413,7 @@ PlotSpec makePlot(const std::vector<Row>& rows, const std::vector<std::string>& 
                  std::to_string(s.height) + ", " + std::to_string(effectiveThreads(s.threads)) +
                  " threads, " + cpu + ")";
     plot.x = {"primitives", true};
-    plot.y = {"wall time per ray (ns)", true};
+    plot.y = {std::string(s.clock.cpu() ? "CPU" : "wall") + " time per ray (ns)", true};
     plot.highlightLabel = "naive on a pixel sample";
     plot.width = 900;
     plot.height = 560;
@@ -464,7 +474,7 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
         throw UsageError("bench accel: plot '" + options.plotPath + "' must end in .svg");
 
     Settings s{options.width, options.height, options.runs, options.threads,
-               options.naiveBudgetSeconds};
+               options.naiveBudgetSeconds, PhaseClock(effectiveThreads(options.threads) == 1)};
     if (options.quick) {
         s.width = std::min(s.width, 128);
         s.height = std::min(s.height, 128);
@@ -477,6 +487,7 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
         << "median of " << s.runs << " runs, naive budget " << s.naiveBudget << " s/frame\n"
         << "machine: " << cpu << ", " << logicalCores() << " logical cores; threads: "
         << effectiveThreads(s.threads) << "; load average " << loadAtStart << "\n"
+        << "frame times: " << s.clock.name() << "; build times: wall-clock\n"
         << "speedup = Embree rays/s / naive rays/s; pixels = naive frame (full) or every k-th "
            "pixel (1/k)\n\n";
     printHeader(out);
@@ -518,9 +529,11 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
            "wall-clock times)\n";
 
     if (format) {
-        writeFileAtomically(options.outPath, *format == TableFormat::Csv
-                                                 ? csvTable(rows, s, cpu)
-                                                 : jsonDocument(rows, crossovers, s, cpu, loadAtStart, loadAtEnd));
+        const std::string doc =
+            *format == TableFormat::Csv
+                ? csvTable(rows, s, cpu)
+                : jsonDocument(rows, crossovers, s, cpu, loadAtStart, loadAtEnd);
+        writeFileAtomically(options.outPath, doc);
         out << "results: " << options.outPath << "\n";
     }
     if (!options.plotPath.empty()) {

@@ -53,32 +53,6 @@ double secondsSince(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// The clock of the timed phases: with one thread (TBB then runs everything
-/// on the calling thread) that thread's CPU time, which a busy shared machine
-/// does not inflate; with more threads, wall-clock time.
-class PhaseClock {
-public:
-    explicit PhaseClock(bool cpu) : m_cpu(cpu) {}
-    /// Seconds `phase()` takes on this clock.
-    template <class F>
-    double time(F&& phase) const {
-        if (m_cpu) {
-            const double t0 = threadCpuSeconds();
-            phase();
-            return threadCpuSeconds() - t0;
-        }
-        const auto t0 = Clock::now();
-        phase();
-        return secondsSince(t0);
-    }
-    const char* name() const {
-        return m_cpu ? "CPU time of the one working thread" : "wall-clock time";
-    }
-
-private:
-    bool m_cpu;
-};
-
 /// Replays the rays through the Accelerator interface (what the integrator
 /// calls: conversion, query, decoding), with the same threading as
 /// EmbreeReplay; counts answers that differ from the recorded ones.
@@ -128,6 +102,7 @@ struct LimitResult {
     uint64_t bareDisagreements = 0, interfaceDisagreements = 0;
     bool countersMatch = false;
     bool cpuClock = false;  ///< times are the working thread's CPU time (one thread)
+    double loadAverage = -1;  ///< 1-minute load average when the run started
 
     double rate(double seconds) const { return seconds > 0 ? double(rays) / seconds : 0; }
     double fraction() const { return bareSeconds > 0 ? bareSeconds / renderSeconds : 0; }
@@ -151,7 +126,8 @@ std::string csvDocument(const LimitResult& r, const std::string& cpu) {
          jsonNumber(r.interfaceSeconds) + "," + jsonNumber(r.rate(r.interfaceSeconds) * 1e-6) +
          "," + jsonNumber(r.bareSeconds) + "," + jsonNumber(r.rate(r.bareSeconds) * 1e-6) + "," +
          jsonNumber(r.fraction()) + "," + (r.fraction() >= kLimitBenchBar ? "true" : "false") +
-         "," + (r.cpuClock ? "thread_cpu" : "wall") + "," + csvField(cpu) + "," + std::to_string(logicalCores()) + "\n";
+         "," + (r.cpuClock ? "thread_cpu" : "wall") + "," + csvField(cpu) + "," +
+         std::to_string(logicalCores()) + "\n";
     return t;
 }
 
@@ -162,7 +138,8 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
     };
     std::string j = "{\n  \"scene\": " + jsonString(r.scene) +
                     ",\n  \"machine\": {\"cpu\": " + jsonString(cpu) +
-                    ", \"cores\": " + std::to_string(logicalCores()) + "}" +
+                    ", \"cores\": " + std::to_string(logicalCores()) +
+                    ", \"load_average\": " + jsonNumber(r.loadAverage) + "}" +
                     ",\n  \"width\": " + std::to_string(r.width) +
                     ",\n  \"height\": " + std::to_string(r.height) +
                     ",\n  \"spd\": " + (r.spd ? "true" : "false") +
@@ -220,6 +197,7 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     r.threads = effectiveThreads(options.threads);
     r.runs = options.runs;
     r.primitives = scene.primitiveCount();
+    r.loadAverage = loadAverage();
     const std::string cpu = cpuModelName();
 
     // Device creation included: the BVH alone is in `bench accel`.
@@ -234,7 +212,7 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
         << renderOptions.spp << ", depth " << renderOptions.maxDepth << ", " << r.primitives
         << " primitives, Embree device + build " << fixed(r.buildSeconds * 1e3, 1) << " ms\n"
         << "  machine: " << cpu << ", " << logicalCores() << " logical cores, load average "
-        << loadAverage() << "; threads: "
+        << r.loadAverage << "; threads: "
         << r.threads << "; median of " << r.runs << " interleaved runs, "
         << PhaseClock(r.threads == 1).name() << "\n"
         << std::flush;

@@ -1,6 +1,8 @@
 #include "renderer/distributed/item_codec.h"
 
+#include <cassert>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +15,26 @@ constexpr size_t kPixelBytes = 12 * sizeof(float);
 // Per corner: colour (3 doubles), hit (1 byte), distance (float),
 // normal (3 doubles), albedo (3 doubles), objectId (float).
 constexpr size_t kCornerBytes = 3 * 8 + 1 + 4 + 3 * 8 + 3 * 8 + 4;
+
+/// Writes into bytes already allocated: one resize per item instead of one
+/// per value (the codec runs on the MPI thread, between messages).
+class SpanWriter {
+public:
+    explicit SpanWriter(unsigned char* p) : m_p(p) {}
+    template <class T>
+    void put(const T& v) {
+        std::memcpy(m_p, &v, sizeof(T));
+        m_p += sizeof(T);
+    }
+    void putBytes(const void* src, size_t n) {
+        std::memcpy(m_p, src, n);
+        m_p += n;
+    }
+    const unsigned char* position() const { return m_p; }
+
+private:
+    unsigned char* m_p;
+};
 
 }  // namespace
 
@@ -29,8 +51,9 @@ size_t ItemCodec::itemBytes(int item) const { return sizeof(int32_t) + payloadBy
 
 void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned char>& out) const {
     const WorkRegion r = m_frame.region(item);
-    out.reserve(out.size() + itemBytes(item));
-    ByteWriter w(out);
+    const size_t at = out.size();
+    out.resize(at + itemBytes(item));
+    SpanWriter w(out.data() + at);
     w.put(int32_t(item));
     if (m_spd) {
         const size_t cw = size_t(from.film.width) + 1;
@@ -51,6 +74,7 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
                 w.put(s.first.objectId);
             }
         }
+        assert(w.position() == out.data() + out.size());
         return;
     }
     const Film& f = from.film;
@@ -64,6 +88,7 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
             w.putBytes(&f.objectId[i], sizeof(float));
         }
     }
+    assert(w.position() == out.data() + out.size());
 }
 
 void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& items) const {

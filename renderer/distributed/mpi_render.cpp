@@ -17,6 +17,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <deque>
+#include <functional>
 #include <list>
 #include <mutex>
 
@@ -151,18 +152,25 @@ Fault faultFor(int rank) {
 /// Renders the items handed to this rank on a TBB arena of its own. The
 /// thread that owns it (the one that talks MPI) only submits chunks and
 /// collects finished items, so it can answer messages while rendering goes on.
+/// On rank 0 the render threads also refill it straight from the queue (a
+/// `source`), so they never wait for the MPI thread to wake up.
 class LocalWorker {
 public:
-    LocalWorker(const FrameRenderer& frame, FrameBuffers& buffers, int threads)
-        : m_frame(frame), m_buffers(buffers), m_threads(threads),
+    /// Takes the next chunk's items from the queue; empty when there are none.
+    using Source = std::function<std::vector<int>()>;
+
+    LocalWorker(const FrameRenderer& frame, FrameBuffers& buffers, int threads,
+                Source source = {})
+        : m_frame(frame), m_buffers(buffers), m_threads(threads), m_source(std::move(source)),
           m_arena(threads, 0) {}  // no slot reserved: the MPI thread never joins
 
     ~LocalWorker() { stopAndWait(); }
 
-    /// Queues the items of one chunk.
+    /// Queues the items of one chunk (any thread).
     void submit(const std::vector<int>& items) {
         if (items.empty()) return;
-        m_chunkLeft.emplace_back(int(items.size()));
+        std::lock_guard<std::mutex> lock(m_submitMutex);
+        m_chunkLeft.emplace_back(int(items.size()));  // deque: earlier counters stay put
         std::atomic<int>* left = &m_chunkLeft.back();
         ++m_heldChunks;
         m_inFlight += int(items.size());
@@ -170,10 +178,25 @@ public:
         for (int item : items) m_arena.enqueue([this, item, left] { run(item, *left); });
     }
 
-    /// Another chunk keeps every thread busy while the request travels:
-    /// fewer than two chunks held, or fewer items than threads.
-    bool wantsMore() const { return m_heldChunks.load() < 2 || m_inFlight.load() < m_threads; }
+    /// Work in reserve keeps every thread busy while a request travels (a
+    /// scheduler wake-up on a loaded machine can take milliseconds): ask for
+    /// more while holding fewer than two chunks or fewer than 2 items per
+    /// thread (+2). At the end of a frame that bounds what a rank holds when
+    /// the others run dry to about two items per thread.
+    bool wantsMore() const {
+        return m_heldChunks.load() < 2 || m_inFlight.load() < 2 * m_threads + 2;
+    }
     bool idle() const { return m_inFlight.load() == 0; }
+
+    /// Pulls chunks from the source while wantsMore(); false when it is empty.
+    bool refill() {
+        while (m_source && !m_stop.load() && wantsMore()) {
+            const std::vector<int> items = m_source();
+            if (items.empty()) return false;
+            submit(items);
+        }
+        return true;
+    }
 
     /// Items finished since the last call.
     std::vector<int> takeDone() {
@@ -207,7 +230,7 @@ public:
     }
     double busySeconds() const { return double(m_busyNs.load()) * 1e-9; }
     double cpuSeconds() const { return double(m_cpuNs.load()) * 1e-9; }
-    uint64_t chunks() const { return m_chunks; }
+    uint64_t chunks() const { return m_chunks.load(); }
     int threads() const { return m_threads; }
 
 private:
@@ -220,16 +243,17 @@ private:
                 m_cpuNs += threadCpuNs() - cpu0;
                 m_busyNs += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0)
                                 .count();
-                std::lock_guard<std::mutex> lock(m_mutex);
-                m_done.push_back(item);
+                {
+                    std::lock_guard<std::mutex> lock(m_mutex);
+                    m_done.push_back(item);
+                }
+                // Still counted in flight here, so the worker never looks idle
+                // between this item and the chunk it pulls.
+                refill();
             } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(m_mutex);
-                if (m_error.empty()) m_error = e.what();
-                m_stop = true;
+                fail(e.what());
             } catch (...) {
-                std::lock_guard<std::mutex> lock(m_mutex);
-                if (m_error.empty()) m_error = "unknown exception in a render thread";
-                m_stop = true;
+                fail("unknown exception in a render thread");
             }
         }
         if (--chunkLeft == 0) --m_heldChunks;
@@ -237,18 +261,26 @@ private:
         --m_inFlight;
     }
 
+    void fail(const std::string& message) {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        if (m_error.empty()) m_error = message;
+        m_stop = true;
+    }
+
     const FrameRenderer& m_frame;
     FrameBuffers& m_buffers;
     const int m_threads;
+    const Source m_source;
     tbb::task_arena m_arena;
     tbb::enumerable_thread_specific<WorkCounters> m_counters;
-    std::deque<std::atomic<int>> m_chunkLeft;  ///< items left per chunk (stable addresses)
+    std::mutex m_submitMutex;
+    std::deque<std::atomic<int>> m_chunkLeft;  ///< items left per chunk
     std::atomic<int> m_heldChunks{0};
     std::atomic<int> m_inFlight{0};
     std::atomic<bool> m_stop{false};
     std::atomic<int64_t> m_busyNs{0};
     std::atomic<int64_t> m_cpuNs{0};
-    uint64_t m_chunks = 0;
+    std::atomic<uint64_t> m_chunks{0};
     std::mutex m_mutex;
     std::vector<int> m_done;
     std::string m_error;
@@ -399,11 +431,28 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
     const int ranks = job.mpi.size();
     const int items = job.frame.workItemCount();
     const bool renders = rootRenders(ranks);
+    // The queue, shared by this thread (remote requests) and the render threads.
     GuidedSchedule schedule(items, renders ? ranks : ranks - 1);
+    std::mutex scheduleMutex;
+    std::atomic<bool> stopping{false};
+    const auto nextChunk = [&] {
+        std::lock_guard<std::mutex> lock(scheduleMutex);
+        return stopping.load() ? WorkChunk{0, 0} : schedule.next();
+    };
+    const auto remaining = [&] {
+        std::lock_guard<std::mutex> lock(scheduleMutex);
+        return schedule.remaining();
+    };
     FrameBuffers buffers = job.frame.makeBuffers();
     const ItemCodec codec(job.frame, job.options);
     Transport net;
-    LocalWorker local(job.frame, buffers, job.threads);
+    // Declared after what its render threads use: destroyed (and waited for) first.
+    LocalWorker local(job.frame, buffers, job.threads,
+                      renders ? LocalWorker::Source([&] {
+                          const WorkChunk c = nextChunk();
+                          return job.chunkItems(c.begin, c.count);
+                      })
+                              : LocalWorker::Source());
     std::vector<Peer> peers(static_cast<size_t>(ranks));
     for (Peer& p : peers) p.lastHeard = job.start;
 
@@ -411,7 +460,6 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
     int haveCount = 0, reported = -1;
     uint64_t localItems = 0;
     double localFinish = 0;
-    bool stopping = false;
     const auto accept = [&](int item, int from) {
         if (have[size_t(item)])
             throw std::runtime_error("work item " + std::to_string(item) + " arrived twice (from " +
@@ -433,10 +481,7 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
         } catch (const std::exception& e) {
             throw std::runtime_error(rankName(0, job.mpi.host()) + ": " + e.what());
         }
-        while (renders && !stopping && schedule.remaining() > 0 && local.wantsMore()) {
-            const WorkChunk c = schedule.next();
-            local.submit(job.chunkItems(c.begin, c.count));
-        }
+        local.refill();  // the first chunks; later the render threads pull their own
 
         for (int r = 1; r < ranks; ++r) {
             Peer& p = peers[size_t(r)];
@@ -452,7 +497,7 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
                                              std::to_string(epoch) + ", rank 0 on frame " +
                                              std::to_string(job.epoch));
                 if (tag == kTagRequest) {
-                    const WorkChunk c = stopping ? WorkChunk{0, 0} : schedule.next();
+                    const WorkChunk c = nextChunk();
                     p.assigned += uint64_t(c.count);
                     std::vector<unsigned char> reply = header(job.epoch);
                     ByteWriter w(reply);
@@ -504,7 +549,7 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
         }
         if (allFinished && local.idle()) {
             if (stopping || haveCount == items) break;
-            if (schedule.remaining() == 0)
+            if (remaining() == 0)
                 throw std::runtime_error(std::to_string(items - haveCount) +
                                          " work items were handed out but never arrived");
         }
@@ -531,7 +576,7 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
                                  std::to_string(int(job.timeout)) + " s");
 
     RenderResult result;
-    result.cancelled = stopping;
+    result.cancelled = stopping.load();
     if (!result.cancelled) job.frame.finish(buffers);
     result.renderSeconds = secondsSince(job.start);
     // Integer sums: the same totals as one process, whatever the split.

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +131,28 @@ TEST_CASE("mpi: supersampling (n-rooks spp 3, adaptive) is bit-identical" * kUnd
     o.adaptiveThreshold = 0.05;
     const auto adaptive = test::prepare(demoPath(), o);
     checkAgainstOneProcess(*adaptive, "demo 48x40, adaptive 0.05");
+}
+
+TEST_CASE("mpi: a cancel on rank 0 stops every rank" * kUnderMpirun) {
+    const auto p = test::prepare(demoPath(), small(160, 120, 4));
+    std::atomic<bool> cancel{false};
+    // Rank 0 cancels at its first progress report: every rank returns cancelled.
+    const RenderResult r = renderDistributed(session(), p->scene, *p->accel, p->options,
+                                             p->effects, [&](double) { cancel = true; },
+                                             &cancel);
+    CHECK(r.cancelled);
+    // Later frames still work (the next test case renders one).
+}
+
+TEST_CASE("mpi: a cancel on another rank stops every rank" * kUnderMpirun) {
+    const auto p = test::prepare(demoPath(), small(160, 120, 4));
+    std::atomic<bool> cancel{!session().isRoot()};  // the workers are interrupted at once
+    const RenderResult r =
+        renderDistributed(session(), p->scene, *p->accel, p->options, p->effects, {}, &cancel);
+    CHECK(r.cancelled);
+    // And the frame after a cancelled one is complete and identical again.
+    const auto q = test::prepare(demoPath(), small(48, 32, 1));
+    checkAgainstOneProcess(*q, "demo 48x32 after two cancelled frames");
 }
 
 TEST_CASE("mpi: a camera-path sequence, frame after frame" * kUnderMpirun) {

@@ -39,7 +39,8 @@ struct Backend {
 
 /// Embree (default flags), Embree with RTC_SCENE_FLAG_ROBUST, and the naive loop.
 inline std::vector<Backend> allBackends() {
-    return {{"embree", "embree", false}, {"embree robust", "embree", true}, {"naive", "naive", false}};
+    return {
+        {"embree", "embree", false}, {"embree robust", "embree", true}, {"naive", "naive", false}};
 }
 
 /// Builds `b` over `scene` with geometry relative to `origin` (the eye).

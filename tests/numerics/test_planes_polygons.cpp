@@ -31,7 +31,8 @@ Scene flatScene(const Vec3& offset) {
     scene.objects.push_back(shapeObject("disk", makeDisk(offset, {0, 0, 1}, 2)));
     std::vector<Vec3> pentagon;
     for (int k = 0; k < 5; ++k)
-        pentagon.push_back(offset + Vec3{2 * std::cos(2 * kPi * k / 5), 2 * std::sin(2 * kPi * k / 5), 0});
+        pentagon.push_back(offset +
+                           Vec3{2 * std::cos(2 * kPi * k / 5), 2 * std::sin(2 * kPi * k / 5), 0});
     scene.objects.push_back(
         shapeObject("pentagon", makePolygon(polygonParams(pentagon, PolygonTest::Watertight))));
     scene.objects.push_back(
@@ -89,8 +90,8 @@ TEST_CASE("flat: a ray at 1e-6 rad to the plane gives a finite t and an accurate
     // From height h = 1e-3 at angle a = 1e-6 below the horizon: t = h / sin a
     // ≈ 1000 (|d| = 1), the hit point 1000 units away. The relative error of t
     // is ~ε / sin a for the plane formula in general, but here n·o and n·d are
-    // exact, so t is good to a few ulps and the point to ~1e-12 relative. The quad mesh goes through Embree's float
-    // triangle test (and is recomputed in double by Scene::surfaceAt).
+    // exact, so t is good to a few ulps and the point to ~1e-12 relative. The quad mesh goes
+    // through Embree's float triangle test (and is recomputed in double by Scene::surfaceAt).
     const double a = 1e-6, h = 1e-3;
     for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{1e5, -1e5, 1e5}}) {
         for (size_t i : {size_t(0), size_t(4)}) {
@@ -123,8 +124,8 @@ TEST_CASE("flat: a ray at 1e-6 rad to the plane gives a finite t and an accurate
                 const SurfaceInteraction si = scene.surfaceAt(ray, *hit);
                 const double dt = std::abs(hit->t - double(tExact)) / double(tExact);
                 MESSAGE(b.label << " " << scene.objects[0].name << " offset " << offset.x
-                                << ": |t - exact| / t = " << dt << ", |p - exact| = "
-                                << length(si.p - exact));
+                                << ": |t - exact| / t = " << dt
+                                << ", |p - exact| = " << length(si.p - exact));
                 if (b.name == "naive" || i == 0) CHECK(dt <= 1e-12);
                 // Embree's float triangle t is only the search bound; surfaceAt redoes it.
                 CHECK(length(si.p - exact) <= 1e-12 * double(tExact) + 1e-15 * length(offset));
@@ -171,7 +172,8 @@ TEST_CASE("flat: rays through the shared vertex of a polygon fan hit exactly one
                 int misses = 0, notOne = 0, rays = 0;
                 double worstT = 0;
                 for (int i = 0; i < 400; ++i) {
-                    const Vec3 o = c + Vec3{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(0.1, 3)};
+                    const Vec3 o =
+                        c + Vec3{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(0.1, 3)};
                     const Vec3 target = i % 2 == 0 ? c : (c + rim[i % 7]) * 0.5;
                     const Ray ray{o, target - o};
                     ++rays;
@@ -186,8 +188,9 @@ TEST_CASE("flat: rays through the shared vertex of a polygon fan hit exactly one
                     }
                     worstT = std::max(worstT, std::abs(hit->t - 1.0));
                 }
-                MESSAGE(std::string(watertight ? "watertight" : "projected") << ", " << b.label << ", offset "
-                        << offset.x << ": " << misses << "/" << rays << " misses, " << notOne
+                MESSAGE(std::string(watertight ? "watertight" : "projected")
+                        << ", " << b.label << ", offset " << offset.x << ": " << misses << "/"
+                        << rays << " misses, " << notOne
                         << " rays not accepted by exactly one polygon, worst |t - 1| " << worstT);
                 if (watertight) {
                     CHECK(misses == 0);

@@ -131,7 +131,8 @@ TEST_CASE("quadrics stack: ray parallel to a cone's side (a = 0) has its one rea
     //      there (the axis, cone.h) must be finite.
     for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{1e5, -1e5, 1e5}}) {
         for (Precision precision : {Precision::Double, Precision::Float}) {
-            const Scene scene = single(cone(offset, 1, offset + Vec3{0, 0, 1}, 0, false), precision);
+            const Scene scene =
+                single(cone(offset, 1, offset + Vec3{0, 0, 1}, 0, false), precision);
             const Vec3 d{-1, 0, 1};
             for (const Backend& b : allBackends()) {
                 CAPTURE(b.label);
@@ -195,10 +196,11 @@ TEST_CASE("quadrics stack: paraboloid hit along its axis (a = 0) and a quadric c
                 // The expanded coefficients at 1e5 carry J ~ 2e10: the
                 // double answer keeps ~1e-6 there, float keeps nothing useful
                 // beyond "a finite hit near the surface".
-                const double tol = offset.x == 0 ? tolerance(precision, offset)
-                                   : precision == Precision::Double ? 1e-4 : 1.0;
-                MESSAGE(b.label << " " << std::string(precisionName(precision)) << " offset " << offset.x
-                                << ": paraboloid t = " << hit->t << " (exact 9.75)");
+                const double tol = offset.x == 0                    ? tolerance(precision, offset)
+                                   : precision == Precision::Double ? 1e-4
+                                                                    : 1.0;
+                MESSAGE(b.label << " " << std::string(precisionName(precision)) << " offset "
+                                << offset.x << ": paraboloid t = " << hit->t << " (exact 9.75)");
                 CHECK(std::abs(hit->t - 9.75) <= tol);
                 CHECK(isFinite(scene.surfaceAt(ray, *hit).ng));
             }

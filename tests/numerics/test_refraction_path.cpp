@@ -78,7 +78,9 @@ TEST_CASE("refraction path: total internal reflection at the critical angle and 
             CHECK(at(r, RayType::Refraction, 2) == 1);  // in through the front face
             const uint64_t refr = at(r, RayType::Refraction, 3);
             const uint64_t refl = at(r, RayType::Reflection, 3);
-            MESSAGE("theta_c " << std::string(delta < 0 ? "- 1e-7" : delta > 0 ? "+ 1e-7" : "exactly")
+            MESSAGE("theta_c " << std::string(delta < 0   ? "- 1e-7"
+                                              : delta > 0 ? "+ 1e-7"
+                                                          : "exactly")
                                << ": depth-3 refraction " << refr << ", reflection (TIR) " << refl);
             CHECK(refr + refl == 1);
             if (delta < 0) CHECK(refr == 1);
@@ -117,7 +119,8 @@ TEST_CASE("refraction path: a glass sphere of index 1 is invisible") {
                 s.objects.push_back(shapeObject("glass", std::move(g), 0));
             }
             s.objects.push_back(shapeObject("red", makeSphere(offset + Vec3{-1, 0.4, -3}, 1), 1));
-            s.objects.push_back(shapeObject("green", makeSphere(offset + Vec3{0.8, -0.5, -2}, 0.7), 2));
+            s.objects.push_back(
+                shapeObject("green", makeSphere(offset + Vec3{0.8, -0.5, -2}, 0.7), 2));
             s.objects.push_back(shapeObject("blue", makeSphere(offset + Vec3{0.3, 1.0, -6}, 2), 3));
             return s;
         };
@@ -189,8 +192,8 @@ TEST_CASE("refraction path: every ray entering a glass sphere leaves through the
                 }
             }
             MESSAGE(b.label << ", offset " << offset.x << ": " << inward << " inward rays ("
-                            << badInward << " bad, worst chord error " << worst << "), "
-                            << outward << " outward rays (" << badOutward << " re-hits)");
+                            << badInward << " bad, worst chord error " << worst << "), " << outward
+                            << " outward rays (" << badOutward << " re-hits)");
             CHECK(inward > 300);
             CHECK(badInward == 0);
             CHECK(badOutward == 0);

@@ -105,7 +105,8 @@ TEST_CASE("acne: grounds near and 1e5 from the origin, robust offset vs fixed ep
                 CHECK(robust.ground > 1000);
                 CHECK(robust.black == 0);
                 CHECK(robust.nonFinite == 0);
-                line += " robust " + std::to_string(robust.black) + "/" + std::to_string(robust.ground);
+                line +=
+                    " robust " + std::to_string(robust.black) + "/" + std::to_string(robust.ground);
                 for (double eps : {1e-2, 1e-4, 1e-6}) {
                     RenderOverrides o;
                     o.epsilon = eps;
@@ -137,7 +138,8 @@ Scene thinWall(const Vec3& s) {
     const double w = 1e-4;
     auto m = std::make_shared<TriangleMesh>();
     for (int i = 0; i < 8; ++i)
-        m->positions.push_back(s + Vec3{(i & 1) ? w : 0.0, (i & 2) ? 2.0 : 0.0, (i & 4) ? 2.0 : -2.0});
+        m->positions.push_back(s +
+                               Vec3{(i & 1) ? w : 0.0, (i & 2) ? 2.0 : 0.0, (i & 4) ? 2.0 : -2.0});
     // Two triangles per face, outward winding.
     m->triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5},   // x = 0, x = w
                     {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},   // y = 0, y = 2
@@ -184,7 +186,8 @@ TEST_CASE("acne: contact shadows at a 1e-4 thin wall, and a light 1e-4 behind it
                             ++points;
                             for (const Vec3 light : {s + Vec3{-3, 1.5, 0}, s + Vec3{-1e-4, 1, 0}}) {
                                 const bool nearLight = light.x == s.x - 1e-4;
-                                if (nearLight && !right) continue;  // that light sits on the floor side
+                                if (nearLight && !right)
+                                    continue;  // that light sits on the floor side
                                 const SpawnedRay r = spawnRay(si.p, si.ng, light - si.p, spawn);
                                 const bool occ = accel->occluded(r.ray, r.tMin, 1.0);
                                 if (right && !occ) ++(nearLight ? nearLeaks : leaks);
@@ -193,8 +196,8 @@ TEST_CASE("acne: contact shadows at a 1e-4 thin wall, and a light 1e-4 behind it
                         }
                     }
                 }
-                MESSAGE(b.label << ", offset " << s.x << ", " << mode << ": " << leaks
-                                << " leaks, " << nearLeaks << " leaks from the light 1e-4 behind "
+                MESSAGE(b.label << ", offset " << s.x << ", " << mode << ": " << leaks << " leaks, "
+                                << nearLeaks << " leaks from the light 1e-4 behind "
                                 << "the wall, " << falseShadows << " false shadows (" << points
                                 << " floor points)");
                 if (std::string(mode) == "robust") {
@@ -225,7 +228,8 @@ std::vector<std::pair<std::string, Scene>> shapeKinds(const Vec3& c) {
     add("plane", makePlane(c, normalize(Vec3{0.2, 0.1, 1}), 10));
     add("disk", makeDisk(c, normalize(Vec3{-0.1, 0.3, 1}), 1.5));
     PolygonParams quad;
-    quad.vertices = {c + Vec3{-1, -1, 0}, c + Vec3{1, -1, 0.2}, c + Vec3{1, 1, 0.4}, c + Vec3{-1, 1, 0.2}};
+    quad.vertices = {c + Vec3{-1, -1, 0}, c + Vec3{1, -1, 0.2}, c + Vec3{1, 1, 0.4},
+                     c + Vec3{-1, 1, 0.2}};
     add("polygon", makePolygon(quad));
     ConeParams cyl;
     cyl.base = c + Vec3{0, -1, 0};
@@ -286,7 +290,10 @@ TEST_CASE("acne: mirror rays from every shape kind, double precision, near and f
     // every scale.
     for (double scale : {0.0, 1e4, 1e5}) {
         const Vec3 c{scale, -0.5 * scale, 0.25 * scale};
-        for (const auto& [name, scene] : shapeKinds(c)) {
+        for (const auto& kind : shapeKinds(c)) {
+            // Plain variables: C++17 lambdas (CAPTURE) cannot capture structured bindings.
+            const std::string name = kind.first;
+            const Scene& scene = kind.second;
             for (const Backend& b : allBackends()) {
                 CAPTURE(name);
                 CAPTURE(b.label);
@@ -308,7 +315,9 @@ TEST_CASE("acne: mirror rays from every shape kind in float precision" * doctest
     // they are fixed (see the final report).
     for (double scale : {0.0, 1e4, 1e5}) {
         const Vec3 c{scale, -0.5 * scale, 0.25 * scale};
-        for (auto& [name, scene] : shapeKinds(c)) {
+        for (auto& kind : shapeKinds(c)) {
+            const std::string name = kind.first;
+            Scene& scene = kind.second;
             for (Object& o : scene.objects)
                 if (o.shape) o.shape->setPrecision(Precision::Float);
             for (const Backend& b : allBackends()) {

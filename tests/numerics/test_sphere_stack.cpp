@@ -26,7 +26,8 @@ Scene farSpheres(Rng& rng, const Vec3& eye, double distance, double r, int count
     scene.materials.resize(1);
     for (int i = 0; i < count; ++i) {
         centres.push_back(eye + rng.direction() * distance);
-        scene.objects.push_back(shapeObject("s" + std::to_string(i), makeSphere(centres.back(), r)));
+        scene.objects.push_back(
+            shapeObject("s" + std::to_string(i), makeSphere(centres.back(), r)));
     }
     return scene;
 }
@@ -178,7 +179,8 @@ TEST_CASE("sphere stack: float intersectors keep hit/miss right up to D/r = 1e5"
     }
 }
 
-TEST_CASE("sphere stack: rays starting inside hit the far side once, one-sided spheres not at all") {
+TEST_CASE(
+    "sphere stack: rays starting inside hit the far side once, one-sided spheres not at all") {
     // From random points inside (|p - c| < 0.9 r) the only root ahead is the
     // far one: two-sided spheres report it (within a few ulps, back face),
     // one-sided (outside) spheres are invisible from inside.
@@ -200,7 +202,8 @@ TEST_CASE("sphere stack: rays starting inside hit the far side once, one-sided s
             double worst = 0;
             int wrong = 0, seen = 0;
             for (int i = 0; i < 1000; ++i) {
-                const Ray ray{centre + rng.direction() * (0.9 * r * rng.uniform()), rng.direction()};
+                const Ray ray{centre + rng.direction() * (0.9 * r * rng.uniform()),
+                              rng.direction()};
                 const SphereRoots ref = sphereReference(ray, centre, r);
                 REQUIRE(ref.hit);
                 REQUIRE(ref.t0 < 0);

@@ -131,9 +131,9 @@ namespace {
 /// (3: v4 v6 v5, v6 the midpoint of v4 v5) and a single point (4: v7 x 3).
 Scene degenerateScene() {
     auto mesh = std::make_shared<TriangleMesh>();
-    mesh->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0},  // quad
-                       {-0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {0, 0, 0.5},  // collinear
-                       {0.25, -0.5, 0.5}};                               // point
+    mesh->positions = {{-1, -1, 0},       {1, -1, 0},      {1, 1, 0},   {-1, 1, 0},  // quad
+                       {-0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {0, 0, 0.5},              // collinear
+                       {0.25, -0.5, 0.5}};                                           // point
     mesh->triangles = {{0, 1, 2}, {0, 2, 3}, {4, 4, 5}, {4, 6, 5}, {7, 7, 7}};
     Scene scene;
     scene.materials.resize(1);
@@ -213,8 +213,10 @@ TEST_CASE("watertight: oblique rays exactly through a zero-area triangle's verti
                 if (!(std::abs(atQuad.x) < 1 && std::abs(atQuad.y) < 1)) continue;
                 ++rays;
                 const auto w = shootDegenerate(*accel, scene, Ray{o, d}, true, badNormals);
-                if (w && *w < 0) ++wrongMiss;
-                else if (w) ++wrongPrim[*w];
+                if (w && *w < 0)
+                    ++wrongMiss;
+                else if (w)
+                    ++wrongPrim[*w];
             }
         }
         MESSAGE(b.label << ": " << rays << " oblique rays through degenerate vertices: hits on "

@@ -85,7 +85,8 @@ namespace {
 /// two point lights) around `s`, seen from 10 units away.
 Scene zoo(const Vec3& s) {
     Scene scene;
-    scene.camera = Camera::perspective(s + Vec3{0.7, 3.1, 9.3}, s + Vec3{0.2, 0.8, 0}, {0, 1, 0}, 45);
+    scene.camera =
+        Camera::perspective(s + Vec3{0.7, 3.1, 9.3}, s + Vec3{0.2, 0.8, 0}, {0, 1, 0}, 45);
     scene.image.width = 96;
     scene.image.height = 72;
     scene.background = Color(0.3, 0.4, 0.5);
@@ -99,10 +100,9 @@ Scene zoo(const Vec3& s) {
     scene.lights = {key, fill};
     Material matte = material(Color(0.6, 0.55, 0.5), Color(0.6, 0.55, 0.5));
     matte.ks = Color(0.2);
-    scene.materials = {matte,
-                       material(Color(0.05), Color(0.02), Color(0.85)),                    // mirror
-                       material(Color(0.0), Color(0.0), Color(0.1), Color(0.9), 1.5),        // glass
-                       material(Color(0.8, 0.2, 0.1), Color(0.8, 0.2, 0.1))};               // red
+    scene.materials = {matte, material(Color(0.05), Color(0.02), Color(0.85)),         // mirror
+                       material(Color(0.0), Color(0.0), Color(0.1), Color(0.9), 1.5),  // glass
+                       material(Color(0.8, 0.2, 0.1), Color(0.8, 0.2, 0.1))};          // red
     const auto add = [&](const char* name, std::unique_ptr<Shape> shape, uint32_t m) {
         if (scene.materials[m].transmissive()) shape->setSidedness(Sidedness::Both);
         scene.objects.push_back(shapeObject(name, std::move(shape), m));

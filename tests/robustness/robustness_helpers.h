@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -100,9 +101,20 @@ public:
         for (std::string& a : all) argv.push_back(a.data());
         argv.push_back(nullptr);
         m_start = std::chrono::steady_clock::now();
+        // Signals sent right after fork must not reach the test framework's
+        // own handlers in the child (it is still a copy of this process until
+        // exec): block them across fork, reset them to default in the child,
+        // and only then unblock. A SIGINT that arrives before exec then ends
+        // the child as it would end raylab before main.
+        sigset_t all, previous;
+        sigfillset(&all);
+        ::pthread_sigmask(SIG_SETMASK, &all, &previous);
         m_pid = ::fork();
         if (m_pid == 0) {
             // Child: only async-signal-safe calls until exec.
+            for (int sig : {SIGINT, SIGTERM, SIGSEGV, SIGABRT, SIGFPE, SIGILL, SIGBUS})
+                ::signal(sig, SIG_DFL);
+            ::sigprocmask(SIG_SETMASK, &previous, nullptr);
             const int in = ::open("/dev/null", O_RDONLY);
             const int out = ::open(outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -110,12 +122,10 @@ public:
             ::dup2(in, 0);
             ::dup2(out, 1);
             ::dup2(err, 2);
-            // SIGINT must reach the program's own handler even when the test
-            // runner ignores it.
-            ::signal(SIGINT, SIG_DFL);
             ::execv(argv[0], argv.data());
             ::_exit(127);
         }
+        ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     }
     ~Process() {
         if (m_pid > 0 && !m_reaped) {
@@ -243,6 +253,21 @@ inline void checkRendered(const RunResult& r, const Scratch& dir,
     expected.push_back("out.png");
     std::sort(expected.begin(), expected.end());
     CHECK(dir.files() == expected);
+}
+
+}  // namespace raylab::robust
+
+namespace raylab::robust {
+
+/// For inputs that may legitimately go either way (extreme but finite
+/// values): rendered (checkRendered) or refused (checkRefused with exit 1
+/// and `location`), never a crash, a hang or a half-written file.
+inline void checkHandled(const RunResult& r, const Scratch& dir,
+                         const std::vector<std::string>& inputs, const std::string& location) {
+    if (r.exitCode == 0)
+        checkRendered(r, dir, inputs);
+    else
+        checkRefused(r, dir, inputs, 1, location, "");
 }
 
 }  // namespace raylab::robust

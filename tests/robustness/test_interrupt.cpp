@@ -23,12 +23,11 @@ std::string sphereGrid(int n) {
     std::string s =
         "v\nfrom 0 0 30\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 64 64\n"
         "l 10 10 30\nl -10 5 20\nf 0.8 0.6 0.4 0.7 0.3 20 0 1\n";
-    const int side = 1;
     int k = 0;
     for (int i = 0; k < n; ++i)
         for (int j = 0; j < 50 && k < n; ++j, ++k)
             s += "s " + std::to_string(j - 25) + " " + std::to_string(i % 40 - 20) + " " +
-                 std::to_string(-(i / 40) * side) + " 0.45\n";
+                 std::to_string(-(i / 40)) + " 0.45\n";
     return s;
 }
 
@@ -87,23 +86,32 @@ TEST_CASE("interrupt: a second SIGINT leaves at once, still without output") {
 }
 
 TEST_CASE("interrupt: wherever SIGINT lands, the outputs are absent or complete") {
-    // A render of about a quarter of a second, interrupted at increasing
-    // delays: before the render, during it, during the writes, after it.
+    // A short render is timed once, then interrupted at delays from 0 to
+    // 1.4x its duration: before main, during the load, the render, the
+    // writes, and after the end.
     Scratch dir;
-    const std::string scene = dir.write("grid.nff", sphereGrid(300));
+    const std::string scene = dir.write("grid.nff", sphereGrid(100));
+    const std::vector<std::string> args{
+        "render",  scene,      "-o",     dir.file("out.exr"), "--png",     dir.file("out.png"),
+        "--width", "160",      "--height", "160",             "--accel",   "naive",
+        "--threads", "2",      "--quiet"};
+    double full = 0;
+    {
+        Process p(args, dir.file("stdout"), dir.file("stderr"));
+        REQUIRE(p.wait(60));
+        REQUIRE(p.exitCode() == 0);
+        full = p.secondsSinceStart();
+    }
     int interrupted = 0, finished = 0;
     for (int i = 0; i < 12; ++i) {
-        const double delay = 0.04 * i;
+        const double delay = full * 1.4 * i / 11;
         CAPTURE(delay);
         for (const char* f : {"out.exr", "out.png"}) std::filesystem::remove(dir.file(f));
-        Process p({"render", scene, "-o", dir.file("out.exr"), "--png", dir.file("out.png"),
-                   "--width", "400", "--height", "400", "--accel", "naive", "--threads", "2",
-                   "--quiet"},
-                  dir.file("stdout"), dir.file("stderr"));
+        Process p(args, dir.file("stdout"), dir.file("stderr"));
         REQUIRE(p.started());
         sleepSeconds(delay);
         p.signal(SIGINT);
-        REQUIRE(p.wait(20));
+        REQUIRE(p.wait(60));
         CHECK_FALSE(hasTemp(dir));
         const bool exr = std::filesystem::exists(dir.file("out.exr"));
         const bool png = std::filesystem::exists(dir.file("out.png"));
@@ -119,10 +127,11 @@ TEST_CASE("interrupt: wherever SIGINT lands, the outputs are absent or complete"
             // Complete: the EXR reads back at full size.
             raylab::Film film;
             CHECK_NOTHROW(film = raylab::readExr(dir.file("out.exr")));
-            CHECK(film.width == 400);
-            CHECK(film.height == 400);
+            CHECK(film.width == 160);
+            CHECK(film.height == 160);
         }
     }
-    MESSAGE("interrupted " << interrupted << ", finished " << finished);
+    MESSAGE("render " << full << " s; interrupted " << interrupted << ", finished " << finished);
     CHECK(interrupted > 0);
+    WARN(finished > 0);  // timing-dependent: the late signals usually miss the render
 }

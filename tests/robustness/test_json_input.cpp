@@ -133,6 +133,16 @@ TEST_CASE("json: deeply nested and huge documents") {
                  std::to_string(std::sin(a)) + ", 0]";
     }
     rendered(scene("{\"type\": \"polygon\", \"vertices\": [" + verts + "], \"sides\": \"both\"}"));
+    // The same polygon with "triangulate": true: the ear clipping is quadratic
+    // (20000 vertices take 2 s, 40000 take 7 s), so 300000 would take minutes.
+    // It must be refused at its line or rendered within 30 s.
+    Scratch dir;
+    const std::string path = dir.write(
+        "scene.json", scene("{\"type\": \"polygon\", \"vertices\": [" + verts +
+                            "], \"triangulate\": true}"));
+    const RunResult r = runRaylab(tinyRender(dir, path), 30);
+    CAPTURE(r.seconds);
+    checkHandled(r, dir, {"scene.json"}, path + ":4:");
 }
 
 TEST_CASE("json: very long lines and keys neither hang nor flood the terminal") {
