@@ -38,7 +38,7 @@ std::optional<ShapeHit> Cone::intersectT(const Ray& ray, double tMin, double tMa
     using V = Vec3T<T>;
     // Local frame: base at the origin, z along the axis (orthonormal, so t is unchanged).
     const V ex(m_frame.t), ey(m_frame.b), ez(m_frame.n);
-    const V w = V(ray.o) - V(m_base);
+    const V w(ray.o - m_base);  // subtracted in double before rounding to T
     const V dw(ray.d);
     const T ox = dot(w, ex), oy = dot(w, ey), oz = dot(w, ez);
     const T dx = dot(dw, ex), dy = dot(dw, ey), dz = dot(dw, ez);

@@ -18,8 +18,9 @@ template <class T>
 std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMax) const {
     using V = Vec3T<T>;
     const V n(m_frame.n);
-    const V c(m_centre);
-    const V o(ray.o);
+    // Relative to the centre, subtracted in double before rounding to T.
+    const V c{};
+    const V o(ray.o - m_centre);
     const V d(ray.d);
 
     T t, cosine;

@@ -24,9 +24,10 @@ template <class T>
 std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tMax) const {
     using V = Vec3T<T>;
     const V n(m_frame.n);
-    const V o(ray.o);
+    // Relative to the plane's point, subtracted in double before rounding to T.
+    const V o(ray.o - m_point);
     const V d(ray.d);
-    const V p0(m_point);
+    const V p0{};
 
     T t, cosine;
     if (!intersectPlane(n, p0, o, d, t, cosine)) return std::nullopt;

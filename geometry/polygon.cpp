@@ -270,7 +270,8 @@ std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double 
     const V o(ray.o);
     const V d(ray.d);
     T t, cosine;
-    if (!intersectPlane(V(m_frame.n), V(m_centroid), o, d, t, cosine)) return std::nullopt;
+    // t relative to the centroid, subtracted in double before rounding to T.
+    if (!intersectPlane(V(m_frame.n), V{}, V(ray.o - m_centroid), d, t, cosine)) return std::nullopt;
     if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
     const double td = static_cast<double>(t);
     if (!(tMin < td && td < tMax)) return std::nullopt;

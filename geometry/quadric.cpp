@@ -116,7 +116,7 @@ std::optional<ShapeHit> Quadric::intersectT(const Ray& ray, double tMin, double 
     using V = Vec3T<T>;
     const std::array<T, 6> m{T(m_m[0]), T(m_m[1]), T(m_m[2]), T(m_m[3]), T(m_m[4]), T(m_m[5])};
     const V g(m_g);
-    const V q = V(ray.o) - V(m_centre);
+    const V q(ray.o - m_centre);  // subtracted in double before rounding to T
     const V d(ray.d);
     const V mq = mulSym(m, q);
     const T a = dot(d, mulSym(m, d));

@@ -30,12 +30,13 @@ Bounds3 Sphere::bounds() const {
 template <class T>
 std::optional<ShapeHit> Sphere::intersectT(const Ray& ray, double tMin, double tMax) const {
     using V = Vec3T<T>;
-    const V centre(m_centre);
     const T r = static_cast<T>(m_radius);
-    const V o(ray.o);
     const V d(ray.d);
-
-    const V oc = o - centre;  // work relative to the centre
+    // Work relative to the centre, subtracting in double before any rounding
+    // to T: a float path that rounded origin and centre separately would lose
+    // everything below ulp(|origin|) (acne far from the world origin).
+    const Vec3 ocd = ray.o - m_centre;
+    const V oc(ocd);
     const T a = dot(d, d);
     if (!(a > T(0))) return std::nullopt;  // zero or NaN direction
     const T h = dot(oc, d);                // half of the textbook b
@@ -43,12 +44,16 @@ std::optional<ShapeHit> Sphere::intersectT(const Ray& ray, double tMin, double t
     T c = dot(oc, oc) - r * r;
     T disc;
     if (std::abs(c) < T(kIllConditionedC) * r * r) {
-        // Origin close to the surface: redo c in doubled precision. oc itself is
-        // taken exactly as hi + lo so the result does not depend on where the centre is.
-        T lx, ly, lz;
-        const T hx = twoSum(o.x, -centre.x, lx);
-        const T hy = twoSum(o.y, -centre.y, ly);
-        const T hz = twoSum(o.z, -centre.z, lz);
+        // Origin close to the surface: redo c in doubled precision, from the
+        // exact double difference o - centre (hi + lo), split into T, so the
+        // result does not depend on where the centre is.
+        double ex, ey, ez;
+        const double dx = twoSum(ray.o.x, -m_centre.x, ex);
+        const double dy = twoSum(ray.o.y, -m_centre.y, ey);
+        const double dz = twoSum(ray.o.z, -m_centre.z, ez);
+        const T hx = T(dx), hy = T(dy), hz = T(dz);
+        const T lx = T((dx - double(hx)) + ex), ly = T((dy - double(hy)) + ey),
+                lz = T((dz - double(hz)) + ez);
         c = sumSquaresMinusSquare(hx, hy, hz, lx, ly, lz, r);
         // With an accurate small c, h² - a·c does not cancel (unless the ray grazes),
         // while r - |f| does for shallow rays: it is the better discriminant here.

@@ -249,7 +249,10 @@ void EmbreeAccelerator::addAnalyticShapes(const Scene& scene, RTCBuildQuality qu
     m_device.check("user geometry setup");
     m_userGeomId = rtcAttachGeometry(m_scene.get(), geom.get());
     m_device.check("rtcAttachGeometry(USER)");
-    if (m_objectOfGeom.size() <= m_userGeomId) m_objectOfGeom.resize(m_userGeomId + 1, 0);
+    if (m_objectOfGeom.size() <= m_userGeomId) {
+        m_objectOfGeom.resize(m_userGeomId + 1, 0);
+        m_triangleOfPrim.resize(m_userGeomId + 1);
+    }
     // geom's destructor releases our reference; the scene keeps its own.
 }
 
@@ -265,9 +268,6 @@ void EmbreeAccelerator::addMesh(const Object& object, uint32_t objectIndex,
     // vertices are converted to float relative to the origin (camera).
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
-    auto* indices = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(unsigned), mesh.triangleCount()));
     m_device.check("rtcSetNewGeometryBuffer");
 
     for (size_t i = 0; i < vertexCount; ++i) {
@@ -280,6 +280,15 @@ void EmbreeAccelerator::addMesh(const Object& object, uint32_t objectIndex,
         vertices[3 * i + 1] = static_cast<float>(p.y);
         vertices[3 * i + 2] = static_cast<float>(p.z);
     }
+    // Triangles whose float vertices are collinear have no area but Embree's
+    // robust mode still reports hits on them at their vertices (measured:
+    // ~10% of rays aimed exactly at such a vertex): they are left out, and
+    // Embree's primID is mapped back to the mesh's triangle index.
+    std::vector<uint32_t> kept;
+    kept.reserve(mesh.triangleCount());
+    auto floatVertex = [&](uint32_t i) {
+        return Vec3{vertices[3 * i + 0], vertices[3 * i + 1], vertices[3 * i + 2]};
+    };
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t index = mesh.triangles[t][k];
@@ -288,16 +297,32 @@ void EmbreeAccelerator::addMesh(const Object& object, uint32_t objectIndex,
                 throw std::invalid_argument(
                     "embree: mesh '" + object.name + "': triangle " + std::to_string(t) +
                     " uses vertex " + std::to_string(index) + " of " + std::to_string(vertexCount));
-            indices[3 * t + k] = index;
         }
+        const auto& tri = mesh.triangles[t];
+        const Vec3 a = floatVertex(tri[0]);
+        // Differences of floats are exact in double when the exponents are
+        // close, and the cross product then decides collinearity reliably.
+        if (lengthSquared(cross(floatVertex(tri[1]) - a, floatVertex(tri[2]) - a)) > 0)
+            kept.push_back(uint32_t(t));
     }
+    if (kept.empty()) return;
+    auto* indices = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), kept.size()));
+    m_device.check("rtcSetNewGeometryBuffer(INDEX)");
+    for (size_t j = 0; j < kept.size(); ++j)
+        for (int k = 0; k < 3; ++k) indices[3 * j + k] = mesh.triangles[kept[j]][k];
     rtcSetGeometryBuildQuality(geom.get(), quality);
     rtcCommitGeometry(geom.get());
     m_device.check("rtcCommitGeometry(TRIANGLE)");
     const unsigned geomId = rtcAttachGeometry(m_scene.get(), geom.get());
     m_device.check("rtcAttachGeometry(TRIANGLE)");
-    if (m_objectOfGeom.size() <= geomId) m_objectOfGeom.resize(geomId + 1, 0);
+    if (m_objectOfGeom.size() <= geomId) {
+        m_objectOfGeom.resize(geomId + 1, 0);
+        m_triangleOfPrim.resize(geomId + 1);
+    }
     m_objectOfGeom[geomId] = objectIndex;
+    if (kept.size() != mesh.triangleCount()) m_triangleOfPrim[geomId] = std::move(kept);
 }
 
 bool EmbreeAccelerator::toEmbreeRay(const Ray& ray, double tMin, double tMax, RTCRay& out) const {
@@ -348,7 +373,9 @@ std::optional<Hit> EmbreeAccelerator::decode(const RTCRayHit& rayhit,
         return Hit{rayhit.ray.tfar, m_analytic.objects[rayhit.hit.primID], 0, rayhit.hit.u,
                    rayhit.hit.v};
     }
-    return Hit{rayhit.ray.tfar, m_objectOfGeom[geomId], rayhit.hit.primID, rayhit.hit.u,
+    const std::vector<uint32_t>& remap = m_triangleOfPrim[geomId];
+    const uint32_t triangle = remap.empty() ? rayhit.hit.primID : remap[rayhit.hit.primID];
+    return Hit{rayhit.ray.tfar, m_objectOfGeom[geomId], triangle, rayhit.hit.u,
                rayhit.hit.v};
 }
 

@@ -115,6 +115,9 @@ private:
     EmbreeScene m_scene;
     unsigned m_userGeomId = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> m_objectOfGeom;  ///< geomID -> object index
+    /// geomID -> (Embree primID -> mesh triangle), empty where they coincide
+    /// (zero-area triangles are left out of Embree's copy).
+    std::vector<std::vector<uint32_t>> m_triangleOfPrim;
     double m_buildSeconds = 0;
 };
 

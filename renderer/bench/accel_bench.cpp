@@ -409,9 +409,10 @@ PlotSpec makePlot(const std::vector<Row>& rows, const std::vector<std::string>& 
                                          PlotMarker::Triangle, PlotMarker::Diamond,
                                          PlotMarker::Circle};
     PlotSpec plot;
+    const int threads = effectiveThreads(s.threads);
     plot.title = "Time per ray: Embree vs naive (" + std::to_string(s.width) + "x" +
-                 std::to_string(s.height) + ", " + std::to_string(effectiveThreads(s.threads)) +
-                 " threads, " + cpu + ")";
+                 std::to_string(s.height) + ", " + std::to_string(threads) +
+                 (threads == 1 ? " thread, " : " threads, ") + cpu + ")";
     plot.x = {"primitives", true};
     plot.y = {std::string(s.clock.cpu() ? "CPU" : "wall") + " time per ray (ns)", true};
     plot.highlightLabel = "naive on a pixel sample";

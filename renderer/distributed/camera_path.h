@@ -39,7 +39,9 @@ public:
     /// std::invalid_argument otherwise.
     CameraPath(std::vector<CameraKeyframe> keys, Interpolation interpolation);
 
+    /// The keyframes, by increasing frame.
     const std::vector<CameraKeyframe>& keyframes() const { return m_keys; }
+    /// How eye and look-at move between keyframes.
     Interpolation interpolation() const { return m_interpolation; }
 
     /// The camera parameters at `frame`; before the first keyframe and after

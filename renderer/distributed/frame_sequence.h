@@ -10,6 +10,7 @@ namespace raylab {
 struct FrameRange {
     int first = 1;
     int last = 1;
+    /// Number of frames.
     int count() const { return last - first + 1; }
 };
 

@@ -16,7 +16,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <deque>
 #include <functional>
 #include <list>
 #include <mutex>
@@ -159,9 +158,12 @@ public:
     /// Takes the next chunk's items from the queue; empty when there are none.
     using Source = std::function<std::vector<int>()>;
 
-    LocalWorker(const FrameRenderer& frame, FrameBuffers& buffers, int threads,
+    /// `reserve`: how many items it wants in hand (rendering or queued)
+    /// before it asks for more; see wantsMore().
+    LocalWorker(const FrameRenderer& frame, FrameBuffers& buffers, int threads, int reserve,
                 Source source = {})
-        : m_frame(frame), m_buffers(buffers), m_threads(threads), m_source(std::move(source)),
+        : m_frame(frame), m_buffers(buffers), m_threads(threads), m_reserve(reserve),
+          m_source(std::move(source)),
           m_arena(threads, 0) {}  // no slot reserved: the MPI thread never joins
 
     ~LocalWorker() { stopAndWait(); }
@@ -169,23 +171,16 @@ public:
     /// Queues the items of one chunk (any thread).
     void submit(const std::vector<int>& items) {
         if (items.empty()) return;
-        std::lock_guard<std::mutex> lock(m_submitMutex);
-        m_chunkLeft.emplace_back(int(items.size()));  // deque: earlier counters stay put
-        std::atomic<int>* left = &m_chunkLeft.back();
-        ++m_heldChunks;
         m_inFlight += int(items.size());
         ++m_chunks;
-        for (int item : items) m_arena.enqueue([this, item, left] { run(item, *left); });
+        for (int item : items) m_arena.enqueue([this, item] { run(item); });
     }
 
-    /// Work in reserve keeps every thread busy while a request travels (a
-    /// scheduler wake-up on a loaded machine can take milliseconds): ask for
-    /// more while holding fewer than two chunks or fewer than 2 items per
-    /// thread (+2). At the end of a frame that bounds what a rank holds when
-    /// the others run dry to about two items per thread.
-    bool wantsMore() const {
-        return m_heldChunks.load() < 2 || m_inFlight.load() < 2 * m_threads + 2;
-    }
+    /// More work is wanted when fewer than `reserve` items are in hand. A
+    /// rank asks early enough that its threads keep busy while the request
+    /// travels, but no earlier: whatever it holds when the others run dry
+    /// is the imbalance at the end of the frame.
+    bool wantsMore() const { return m_inFlight.load() < m_reserve; }
     bool idle() const { return m_inFlight.load() == 0; }
 
     /// Pulls chunks from the source while wantsMore(); false when it is empty.
@@ -234,7 +229,7 @@ public:
     int threads() const { return m_threads; }
 
 private:
-    void run(int item, std::atomic<int>& chunkLeft) {
+    void run(int item) {
         if (!m_stop.load(std::memory_order_relaxed)) {
             try {
                 const auto t0 = Clock::now();
@@ -256,7 +251,6 @@ private:
                 fail("unknown exception in a render thread");
             }
         }
-        if (--chunkLeft == 0) --m_heldChunks;
         // Last: once nothing is in flight the owner may destroy the worker.
         --m_inFlight;
     }
@@ -270,12 +264,10 @@ private:
     const FrameRenderer& m_frame;
     FrameBuffers& m_buffers;
     const int m_threads;
+    const int m_reserve;
     const Source m_source;
     tbb::task_arena m_arena;
     tbb::enumerable_thread_specific<WorkCounters> m_counters;
-    std::mutex m_submitMutex;
-    std::deque<std::atomic<int>> m_chunkLeft;  ///< items left per chunk
-    std::atomic<int> m_heldChunks{0};
     std::atomic<int> m_inFlight{0};
     std::atomic<bool> m_stop{false};
     std::atomic<int64_t> m_busyNs{0};
@@ -447,7 +439,9 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
     const ItemCodec codec(job.frame, job.options);
     Transport net;
     // Declared after what its render threads use: destroyed (and waited for) first.
-    LocalWorker local(job.frame, buffers, job.threads,
+    // Rank 0 pulls from the queue without a message: one item per thread in
+    // reserve (+1) is enough.
+    LocalWorker local(job.frame, buffers, job.threads, job.threads + 1,
                       renders ? LocalWorker::Source([&] {
                           const WorkChunk c = nextChunk();
                           return job.chunkItems(c.begin, c.count);
@@ -615,7 +609,9 @@ RenderResult runWorker(const FrameJob& job, const std::atomic<bool>* cancel) {
     FrameBuffers buffers = job.frame.makeBuffers();
     const ItemCodec codec(job.frame, job.options);
     Transport net;
-    LocalWorker local(job.frame, buffers, job.threads);
+    // A request takes a round trip and a wake-up of rank 0's MPI thread (on a
+    // loaded machine, milliseconds): two items per thread (+2) in reserve.
+    LocalWorker local(job.frame, buffers, job.threads, 2 * job.threads + 2);
     const double heartbeat = std::min(1.0, job.timeout / 4);
     bool requested = false, noMore = false, aborted = false;
     auto lastSent = job.start, lastHeard = job.start;

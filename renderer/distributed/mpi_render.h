@@ -58,7 +58,8 @@ int threadsPerRank(const MpiSession& mpi, const RenderOptions& options);
 /// stops every rank between items (result.cancelled on all ranks). A rank
 /// that stops answering for RAYLAB_MPI_TIMEOUT seconds (default 120) makes
 /// the surviving side throw std::runtime_error naming the rank and the
-/// items it held; a frame with missing items is never returned.
+/// items it held; a frame with missing items is never returned. With
+/// RAYLAB_MPI_ROOT_RENDERS=0 rank 0 only serves the queue and assembles.
 RenderResult renderDistributed(const MpiSession& mpi, const Scene& scene, const Accelerator& accel,
                                const RenderOptions& options, const EffectSet& effects,
                                const ProgressCallback& progress = {},

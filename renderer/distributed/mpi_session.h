@@ -38,8 +38,11 @@ public:
 
     /// True when MPI was initialised (even with one rank).
     bool active() const { return m_active; }
+    /// This process's rank in MPI_COMM_WORLD (0 without MPI).
     int rank() const { return m_rank; }
+    /// Number of ranks (1 without MPI).
     int size() const { return m_size; }
+    /// Rank 0: the one that assembles frames and writes the files.
     bool isRoot() const { return m_rank == 0; }
     /// Ranks sharing this rank's machine (for the default thread count).
     int ranksOnThisNode() const { return m_nodeRanks; }

@@ -215,6 +215,21 @@ TEST_CASE("accuracy: a tiny sweep end to end") {
     const std::string table = accuracyTable(rep);
     CHECK(table.find("depth 1") != std::string::npos);
 
+    // The scene file's own "render" block must not leak into the sweep
+    // (an epsilon there would replace the robust offset of every setting),
+    // and it is put back afterwards.
+    scene.settings.epsilon = 0.3;
+    scene.settings.maxDepth = 1;
+    const AccuracyReport withBlock = runAccuracySweep(scene, "tiny", o);
+    REQUIRE(withBlock.results.size() == rep.results.size());
+    for (size_t i = 0; i < rep.results.size(); ++i) {
+        CHECK(withBlock.results[i].rmse == rep.results[i].rmse);
+        CHECK(withBlock.results[i].rays == rep.results[i].rays);
+    }
+    REQUIRE(scene.settings.epsilon);
+    CHECK(*scene.settings.epsilon == 0.3);
+    scene.settings = RenderOverrides{};
+
     std::atomic<bool> cancel{true};
     const AccuracyReport stopped = runAccuracySweep(scene, "tiny", o, {}, &cancel);
     CHECK(stopped.cancelled);

@@ -324,8 +324,7 @@ TEST_CASE("sphere stack: rays spawned on the surface do not re-hit it (double)")
     }
 }
 
-TEST_CASE("sphere stack: float intersectors far from the world origin do not re-hit either" *
-          doctest::may_fail()) {
+TEST_CASE("sphere stack: float intersectors far from the world origin do not re-hit either") {
     // The same with Precision::Float. Measured before a fix (every back end,
     // 800 camera hits): scale 0: 0 re-hits; 1e4: 359 reflected re-hits and
     // 438 inward rays hitting the wrong place; 1e5: 401 and 711. Cause:
@@ -334,8 +333,7 @@ TEST_CASE("sphere stack: float intersectors far from the world origin do not re-
     // its roots are off by ~1e-3..1e-2 while the camera-relative offset is
     // ~1e-5. Computing oc = ray.o - centre in double and rounding that (and,
     // in the ill-conditioned branch, splitting the double oc into hi + lo)
-    // gives 0 / 0 at 0, 1e4, 1e5 and 1e6 (checked with a patched copy).
-    // may_fail until geometry/sphere.cpp takes that change.
+    // gives 0 / 0 at 0, 1e4, 1e5 and 1e6: geometry/sphere.cpp now does so.
     for (double scale : {0.0, 1e4, 1e5}) {
         for (const Backend& b : allBackends()) {
             const SpawnCounts c = spawnFromSphere(b, Precision::Float, scale);

@@ -106,9 +106,9 @@ public:
         // exec): block them across fork, reset them to default in the child,
         // and only then unblock. A SIGINT that arrives before exec then ends
         // the child as it would end raylab before main.
-        sigset_t all, previous;
-        sigfillset(&all);
-        ::pthread_sigmask(SIG_SETMASK, &all, &previous);
+        sigset_t blocked, previous;
+        sigfillset(&blocked);
+        ::pthread_sigmask(SIG_SETMASK, &blocked, &previous);
         m_pid = ::fork();
         if (m_pid == 0) {
             // Child: only async-signal-safe calls until exec.

@@ -43,6 +43,18 @@ TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit
     }
 }
 
+TEST_CASE("command line: huge or control-character arguments are not echoed raw") {
+    // A 100 kB value and an escape sequence: still one short, printable line.
+    for (const std::string& value : {std::string(100000, '9'), std::string("\x1b[2J\r\x07oops")}) {
+        Scratch dir;
+        const std::string scene = dir.write("scene.json", kScene);
+        checkRefused(runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", value}),
+                     dir, {"scene.json"}, 2, "", "--width");
+        checkRefused(runRaylab({"render", scene, "-o", dir.file("out.exr"), "--accel", value}),
+                     dir, {"scene.json"}, 2, "", "--accel");
+    }
+}
+
 TEST_CASE("command line: missing or unreadable scenes are input errors (exit 1)") {
     Scratch dir;
     const std::string out = dir.file("out.exr");
