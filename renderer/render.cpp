@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 #include "renderer/sampler.h"
@@ -61,36 +62,38 @@ double maxDifference(const Color& a, const Color& b) {
     return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
 }
 
-/// Whitted's adaptive supersampling of one pixel: trace the four corners of
-/// a square; where they differ by more than the threshold, split it into
-/// four and recurse, sharing corners through a per-pixel cache. Box filter:
-/// each square contributes the mean of its corners, weighted by its area.
-class AdaptivePixel {
+/// Whitted's adaptive supersampling over one tile: trace the four corners of
+/// each pixel; where they differ by more than the threshold, split the square
+/// into four and recurse, up to adaptiveMaxLevel. Corners are shared between
+/// neighbouring squares and pixels of the tile through a sparse cache (keyed
+/// on the tile's finest grid), so a smooth region costs about one ray per
+/// pixel. Box filter: each square contributes the mean of its corners,
+/// weighted by its area.
+class AdaptiveTile {
 public:
-    AdaptivePixel(const WhittedIntegrator& integrator, const Scene& scene,
-                  const RenderOptions& opt, int x, int y, WorkCounters& tc)
-        : m_integrator(integrator), m_scene(scene), m_opt(opt), m_x(x), m_y(y), m_tc(tc),
-          m_res(1 << opt.adaptiveMaxLevel) {
-        m_cache.resize(size_t(m_res + 1) * (m_res + 1));
-        m_done.assign(m_cache.size(), false);
-    }
+    AdaptiveTile(const WhittedIntegrator& integrator, const Scene& scene,
+                 const RenderOptions& opt, const WorkRegion& tile, WorkCounters& tc)
+        : m_integrator(integrator), m_scene(scene), m_opt(opt), m_tile(tile), m_tc(tc),
+          m_res(1 << opt.adaptiveMaxLevel),
+          m_gridWidth(uint64_t(tile.x1 - tile.x0) * uint64_t(m_res) + 1) {}
 
-    /// Returns the pixel's radiance and coverage; `first` gets the corner (0, 0).
-    Color run(double& coverage, FirstHit& first) {
-        const Color c = square(0, 0, m_res, coverage);
-        first = corner(0, 0).first;
+    /// Radiance and coverage of pixel (x, y); `first` gets its top-left corner.
+    Color pixel(int x, int y, double& coverage, FirstHit& first) {
+        const int i = (x - m_tile.x0) * m_res, j = (y - m_tile.y0) * m_res;
+        const Color c = square(i, j, m_res, coverage);
+        first = corner(i, j).first;
         return c;
     }
 
 private:
     const Sample& corner(int i, int j) {
-        const size_t k = size_t(j) * (m_res + 1) + i;
-        if (!m_done[k]) {
-            m_cache[k] = traceSample(m_integrator, m_scene, m_opt, m_x + double(i) / m_res,
-                                     m_y + double(j) / m_res, m_tc);
-            m_done[k] = true;
+        const uint64_t key = uint64_t(j) * m_gridWidth + uint64_t(i);
+        auto it = m_cache.find(key);
+        if (it == m_cache.end()) {
+            const double px = m_tile.x0 + double(i) / m_res, py = m_tile.y0 + double(j) / m_res;
+            it = m_cache.emplace(key, traceSample(m_integrator, m_scene, m_opt, px, py, m_tc)).first;
         }
-        return m_cache[k];
+        return it->second;
     }
 
     /// Square with top-left grid corner (i, j) and side `size` grid steps.
@@ -117,11 +120,11 @@ private:
     const WhittedIntegrator& m_integrator;
     const Scene& m_scene;
     const RenderOptions& m_opt;
-    int m_x, m_y;
+    WorkRegion m_tile;
     WorkCounters& m_tc;
-    int m_res;  ///< finest grid steps per pixel side: 2^maxLevel
-    std::vector<Sample> m_cache;
-    std::vector<bool> m_done;
+    int m_res;             ///< finest grid steps per pixel side: 2^maxLevel
+    uint64_t m_gridWidth;  ///< corners per row of the tile's finest grid
+    std::unordered_map<uint64_t, Sample> m_cache;  // node-based: references stay valid
 };
 
 /// A finite double that may exceed the float range, clamped so that storing
@@ -139,14 +142,6 @@ void storePixel(Film& film, size_t i, const Color& c, double coverage) {
 void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
                  const RenderOptions& opt, Film& film, int x, int y, WorkCounters& tc) {
     const size_t i = film.index(x, y);
-    if (opt.adaptiveThreshold > 0) {
-        double coverage = 0;
-        FirstHit first;
-        const Color c = AdaptivePixel(integrator, scene, opt, x, y, tc).run(coverage, first);
-        if (first.hit && opt.wantAovs) storeFirstHit(film, i, first);
-        storePixel(film, i, c, coverage);
-        return;
-    }
     const int n = std::max(1, opt.spp);
     Pcg32 rng(pixelSeed(opt.seed, i), 0);
     // n-rooks permutation for non-square sample counts (Fisher-Yates).
@@ -207,6 +202,20 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         for (int i = r.x0; i < r.x1; ++i)
             buffers.corners[size_t(r.y0) * cw + i] =
                 traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+        return;
+    }
+    if (m_options.adaptiveThreshold > 0) {
+        AdaptiveTile tile(*m_integrator, m_scene, m_options, r, counters);
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                double coverage = 0;
+                FirstHit first;
+                const Color c = tile.pixel(x, y, coverage, first);
+                const size_t i = buffers.film.index(x, y);
+                if (first.hit && m_options.wantAovs) storeFirstHit(buffers.film, i, first);
+                storePixel(buffers.film, i, c, coverage);
+            }
+        }
         return;
     }
     for (int y = r.y0; y < r.y1; ++y)
