@@ -17,10 +17,19 @@ double robustOffset(const Vec3& p, const SpawnSettings& s) {
     return kOffsetUlps * FLT_EPSILON * magnitude;
 }
 
+RaySpawner::RaySpawner(const Vec3& p, const Vec3& ng, const SpawnSettings& s)
+    : m_p(p), m_ng(ng), m_settings(s) {
+    if (s.mode == OffsetMode::Robust) m_offset = ng * robustOffset(p, s);
+}
+
+SpawnedRay RaySpawner::operator()(const Vec3& dir) const {
+    if (m_settings.mode == OffsetMode::FixedEpsilon)
+        return {Ray{m_p, dir}, m_settings.epsilon / std::max(length(dir), 1e-300)};
+    return {Ray{dot(dir, m_ng) >= 0 ? m_p + m_offset : m_p - m_offset, dir}, 0.0};
+}
+
 SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, const Vec3& dir, const SpawnSettings& s) {
-    if (s.mode == OffsetMode::FixedEpsilon) return {Ray{p, dir}, s.epsilon / std::max(length(dir), 1e-300)};
-    const double side = dot(dir, ng) >= 0 ? 1.0 : -1.0;
-    return {Ray{p + ng * (side * robustOffset(p, s)), dir}, 0.0};
+    return RaySpawner(p, ng, s)(dir);
 }
 
 }  // namespace raylab

@@ -28,6 +28,19 @@ struct SpawnedRay {
     double tMin = 0;  ///< exclusive lower bound of valid hits
 };
 
+/// Spawns the secondary rays of one surface point: the offset is computed
+/// once per hit, not once per ray (a hit spawns a shadow ray per light).
+class RaySpawner {
+public:
+    RaySpawner(const Vec3& p, const Vec3& ng, const SpawnSettings& s);
+    /// A ray leaving the surface in direction dir, on the side dir points to.
+    SpawnedRay operator()(const Vec3& dir) const;
+
+private:
+    Vec3 m_p, m_ng, m_offset;  ///< m_offset = ng · robust offset distance
+    const SpawnSettings& m_settings;
+};
+
 /// A ray leaving the surface point p (unit geometric normal ng, either side)
 /// in direction dir.
 SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, const Vec3& dir, const SpawnSettings& s);

@@ -42,6 +42,7 @@ Camera Camera::perspective(const Vec3& eye, const Vec3& lookAt, const Vec3& up,
     c.m_frame = makeFrame(eye, lookAt - eye, up);
     c.m_projection = Projection::Perspective;
     c.m_vfovDegrees = vfovDegrees;
+    c.m_tanHalfFov = std::tan(0.5 * vfovDegrees * kPi / 180.0);
     return c;
 }
 
@@ -64,7 +65,7 @@ Ray Camera::generateRay(double px, double py, int width, int height) const {
     const double sy = 1.0 - 2.0 * py / height;
     const CameraFrame& f = m_frame;
     if (m_projection == Projection::Perspective) {
-        const double halfHeight = std::tan(0.5 * m_vfovDegrees * kPi / 180.0);
+        const double halfHeight = m_tanHalfFov;
         const double halfWidth = halfHeight * aspect;
         const Vec3 d = f.u * (sx * halfWidth) + f.v * (sy * halfHeight) - f.w;
         return Ray{f.eye, normalize(d)};

@@ -40,6 +40,7 @@ private:
     CameraFrame m_frame;
     Projection m_projection = Projection::Perspective;
     double m_vfovDegrees = 45;
+    double m_tanHalfFov = 0.41421356237309503;  ///< tan(vfov / 2), once rather than per ray
     double m_viewWidth = 2;
 };
 

@@ -146,8 +146,8 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
     Pcg32 rng(pixelSeed(opt.seed, i), 0);
     // n-rooks permutation for non-square sample counts (Fisher-Yates).
     std::vector<int> perm;
-    const int m = int(std::lround(std::sqrt(double(n))));
-    if (n > 1 && m * m != n) {
+    const int gridSide = squareGridSide(n);
+    if (n > 1 && gridSide == 0) {
         perm.resize(n);
         std::iota(perm.begin(), perm.end(), 0);
         for (int k = n - 1; k > 0; --k) std::swap(perm[k], perm[rng.next() % uint32_t(k + 1)]);
@@ -155,7 +155,7 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
     Color sum;
     int hits = 0;
     for (int k = 0; k < n; ++k) {
-        const auto [sx, sy] = stratifiedSample(k, n, rng, perm.data());
+        const auto [sx, sy] = stratifiedSample(k, n, gridSide, rng, perm.data());
         const Sample s = traceSample(integrator, scene, opt, x + sx, y + sy, tc);
         sum += s.c;
         hits += s.first.hit;

@@ -4,10 +4,16 @@
 
 namespace raylab {
 
-std::pair<double, double> stratifiedSample(int k, int n, Pcg32& rng, const int* rookPermutation) {
-    if (n <= 1) return {0.5, 0.5};
+int squareGridSide(int n) {
     const int m = int(std::lround(std::sqrt(double(n))));
-    if (m * m == n) {
+    return m * m == n ? m : 0;
+}
+
+std::pair<double, double> stratifiedSample(int k, int n, int gridSide, Pcg32& rng,
+                                           const int* rookPermutation) {
+    if (n <= 1) return {0.5, 0.5};
+    if (gridSide > 0) {
+        const int m = gridSide;
         const int sx = k % m, sy = k / m;
         const double jx = rng.uniform(), jy = rng.uniform();
         return {(sx + jx) / m, (sy + jy) / m};

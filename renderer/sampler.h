@@ -32,9 +32,13 @@ private:
     uint64_t m_inc = 0;
 };
 
+/// m when n = m², else 0: which stratification stratifiedSample uses.
+int squareGridSide(int n);
+
 /// Sample k of n inside the unit pixel, stratified: an m×m jittered grid when
-/// n = m², otherwise n-rooks (Latin hypercube: stratified along x and y).
-/// n == 1 gives the pixel centre (rays through pixel centres).
-std::pair<double, double> stratifiedSample(int k, int n, Pcg32& rng, const int* rookPermutation);
+/// n = m² (gridSide = m), otherwise n-rooks (Latin hypercube: stratified along
+/// x and y, gridSide = 0). n == 1 gives the pixel centre (rays through pixel centres).
+std::pair<double, double> stratifiedSample(int k, int n, int gridSide, Pcg32& rng,
+                                           const int* rookPermutation);
 
 }  // namespace raylab

@@ -46,7 +46,7 @@ Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHi
 
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
-                                    const Vec3& n, const Vec3& ng, const Vec3& toViewer,
+                                    const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
                                     int depth, RayCounters& counters) const {
     Color result = m.ka * m_scene.ambient;  // ambient once, kept in shadow
     if constexpr ((E & kShadows) == 0) {
@@ -70,7 +70,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             // kernels produce the same image.
             const bool facing = dot(n, l) > 0;
             if (m_prune && !facing) continue;
-            const SpawnedRay shadow = spawnRay(si.p, ng, toLight, m_options.spawn);
+            const SpawnedRay shadow = spawn(toLight);
             counters.count(RayType::Shadow, depth + 1);
             if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) continue;
             result += lambert(m.kd, light.intensity, n, l);
@@ -108,7 +108,8 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
         first->objectId = float(si.object);
     }
 
-    Color result = shadeLocal<E>(si, m, n, ng, -dir, depth, counters);
+    const RaySpawner spawn(si.p, ng, m_options.spawn);  // one offset for all of this hit's rays
+    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters);
     if (depth >= m_options.maxDepth) return result;
 
     constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;
@@ -129,7 +130,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 if (t) {
                     const double w = weight * m.kt.maxComponent();
                     if (!m_prune || m_options.spd || w >= m_options.minWeight) {
-                        const SpawnedRay r = spawnRay(si.p, ng, *t, m_options.spawn);
+                        const SpawnedRay r = spawn(*t);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
                                                   counters, nullptr);
                     }
@@ -143,7 +144,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
             const double w = weight * reflectWeight.maxComponent();
             if (!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) {
                 const Vec3 r = reflect(dir, n);
-                const SpawnedRay s = spawnRay(si.p, ng, r, m_options.spawn);
+                const SpawnedRay s = spawn(r);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
                                                    counters, nullptr);
             }

@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/render_options.h"
@@ -38,7 +39,7 @@ private:
                 RayCounters& counters, FirstHit* first) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
-                     const Vec3& ng, const Vec3& toViewer, int depth,
+                     const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      RayCounters& counters) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,

@@ -14,13 +14,30 @@ inline Color lambert(const Color& kd, const Color& lightIntensity, const Vec3& n
     return kd * lightIntensity * std::max(0.0, dot(n, l));
 }
 
+/// x^s: by repeated squaring when s is a whole number up to 1024 (the usual
+/// case, several times cheaper than std::pow), std::pow otherwise.
+inline double specularPower(double x, double s) {
+    if (s >= 0 && s <= 1024 && s == std::floor(s)) {
+        unsigned e = unsigned(s);
+        double result = 1, base = x;
+        while (e) {
+            if (e & 1u) result *= base;
+            base *= base;
+            e >>= 1u;
+        }
+        return result;
+    }
+    return std::pow(x, s);
+}
+
 /// Blinn-Phong: ks · I · max(0, N·H)^s with H the unit half vector of L and V
 /// (V points from the surface towards the viewer).
 inline Color blinnPhong(const Color& ks, double shininess, const Color& lightIntensity,
                         const Vec3& n, const Vec3& l, const Vec3& v) {
     const Vec3 h = normalize(l + v);
-    const double nh = std::max(0.0, dot(n, h));
-    return ks * lightIntensity * std::pow(nh, shininess);
+    const double nh = dot(n, h);
+    if (!(nh > 0)) return Color{};  // pow(0, s) = 0 for s > 0: skip the pow
+    return ks * lightIntensity * specularPower(nh, shininess);
 }
 
 }  // namespace raylab

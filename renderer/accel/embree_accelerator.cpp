@@ -143,26 +143,22 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
         float& tfar = RTCRayN_tfar(rays, n, i);
-        Ray ray;
-        std::optional<ShapeHit> h;
-        if (exact) {
-            ray = *ctx.ray;
-            // Strict tMin < t < best-so-far in double, NaN-safe (Shape contract).
-            h = shape.intersect(ray, ctx.tMin, ctx.bestT);
-        } else {
-            ray = laneRay(rays, n, i, table.origin);
-            h = shape.intersect(ray, RTCRayN_tnear(rays, n, i), tfar);
-        }
+        // Exact path: strict tMin < t < best-so-far in double, NaN-safe (Shape contract).
+        const std::optional<ShapeHit> h =
+            exact ? shape.intersect(*ctx.ray, ctx.tMin, ctx.bestT)
+                  : shape.intersect(laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i), tfar);
         if (!h) continue;
         // A triangle may already have shrunk tfar below this (double) hit.
         const float t = static_cast<float>(h->t);
         if (!(t <= tfar)) continue;
 
-        const Vec3f ng(shape.surfaceAt(ray, *h).ng);
+        // Embree wants every hit field written, but raylab never reads Ng
+        // (Scene::surfaceAt computes the exact normal for the winning hit),
+        // so a cheap stand-in facing the ray saves a surfaceAt per candidate.
         tfar = t;
-        RTCHitN_Ng_x(hits, n, i) = ng.x;
-        RTCHitN_Ng_y(hits, n, i) = ng.y;
-        RTCHitN_Ng_z(hits, n, i) = ng.z;
+        RTCHitN_Ng_x(hits, n, i) = -RTCRayN_dir_x(rays, n, i);
+        RTCHitN_Ng_y(hits, n, i) = -RTCRayN_dir_y(rays, n, i);
+        RTCHitN_Ng_z(hits, n, i) = -RTCRayN_dir_z(rays, n, i);
         RTCHitN_u(hits, n, i) = static_cast<float>(h->u);
         RTCHitN_v(hits, n, i) = static_cast<float>(h->v);
         RTCHitN_primID(hits, n, i) = args->primID;

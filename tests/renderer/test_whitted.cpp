@@ -196,3 +196,43 @@ TEST_CASE("whitted: the image is bit-identical for any thread count") {
         CHECK(a.rays.total(RayType::Refraction) > 0);
     }
 }
+
+TEST_CASE("adaptive supersampling: corners are shared, and edges are refined") {
+    // 32x16 pixels = two 16x16 tiles. Where no square is split, each tile
+    // traces its (16+1)² corner grid once: 2 · 289 = 578 camera rays, about
+    // one per pixel, and a constant background stays exactly the background.
+    Scene s;
+    s.camera = Camera::perspective({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40);
+    s.background = Color(0.25, 0.5, 0.75);
+    s.image.width = 32;
+    s.image.height = 16;
+    RenderOverrides o;
+    o.adaptiveThreshold = 1e-9;
+    o.adaptiveMaxLevel = 3;
+    RenderOptions opt = resolveRenderOptions(s, o);
+    auto empty = makeAccelerator("embree", s, opt.accelOptions);
+    RenderResult r = render(s, *empty, opt, analyseEffects(s, opt));
+    CHECK(r.rays.total(RayType::Camera) == 578);
+    CHECK(r.film.rgba[0] == 0.25f);
+    CHECK(r.film.rgba[4 * 17 + 2] == 0.75f);
+
+    // A sphere in view: squares across its silhouette split down to level 3,
+    // so more rays are traced, but far fewer than 8x8 supersampling would.
+    Material m;
+    m.ka = Color(1);
+    m.kd = Color(0);
+    s.ambient = Color(1);
+    s.materials.push_back(m);
+    Object ob;
+    ob.shape = makeSphere({0, 0, 0}, 1);
+    s.objects.push_back(std::move(ob));
+    opt = resolveRenderOptions(s, o);
+    auto accel = makeAccelerator("embree", s, opt.accelOptions);
+    r = render(s, *accel, opt, analyseEffects(s, opt));
+    const uint64_t rays = r.rays.total(RayType::Camera);
+    CHECK(rays > 578);
+    CHECK(rays < 32u * 16u * 64u / 4u);
+    CHECK(r.nonFiniteSamples == 0);
+    // Coverage is fractional only on the silhouette; the sphere's centre pixel is fully covered.
+    CHECK(r.film.rgba[4 * r.film.index(16, 8) + 3] == 1.0f);
+}

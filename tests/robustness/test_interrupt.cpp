@@ -62,6 +62,7 @@ TEST_CASE("interrupt: SIGINT during a long render exits 130 promptly with no out
     REQUIRE(exited);
     CHECK(p.exitCode() == 130);
     CHECK(stopSeconds < 2.0);
+    MESSAGE("stopped " << stopSeconds << " s after SIGINT");
     const std::string err = readFile(dir.file("stderr"));
     CAPTURE(err);
     CHECK(lines(err).size() == 1);

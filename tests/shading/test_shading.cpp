@@ -85,3 +85,12 @@ TEST_CASE("fresnel: normal incidence and TIR") {
     CHECK(fresnelDielectric(0.1, 1.5, 1.0) == 1.0);   // beyond critical: TIR
     CHECK(fresnelDielectric(0.0, 1.0, 1.5) == doctest::Approx(1.0));  // grazing
 }
+
+TEST_CASE("specularPower: whole exponents by squaring, the rest through pow") {
+    CHECK(specularPower(0.5, 0) == 1.0);
+    CHECK(specularPower(0.5, 1) == 0.5);
+    CHECK(specularPower(0.5, 3) == 0.125);      // exact in binary
+    CHECK(specularPower(0.5, 10) == 1.0 / 1024);
+    CHECK(specularPower(0.9, 37) == doctest::Approx(std::pow(0.9, 37)).epsilon(1e-14));
+    CHECK(specularPower(0.9, 2.5) == std::pow(0.9, 2.5));
+}
