@@ -195,7 +195,8 @@ TEST_CASE("mpirun cli: --frames needs a camera_path" * kWithMpirun) {
                           "/scenes/primitives.json --frames 1:2 -o " + dir("x.exr"));
     CHECK(r.exitCode == 1);
     CHECK(r.err.find("--frames needs a \"camera_path\" in the scene") != std::string::npos);
-    const Run usage = dir.run(raylabBinary() + " render " + demo() + " --frames 5:2 -o " + dir("x.exr"));
+    const Run usage =
+        dir.run(raylabBinary() + " render " + demo() + " --frames 5:2 -o " + dir("x.exr"));
     CHECK(usage.exitCode == 2);
     CHECK(usage.err.find("--frames: expected FIRST:LAST") != std::string::npos);
 }
