@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build render test clean test-sanitize
+.PHONY: all deps configure build render render-mpi test clean test-sanitize
 
 all: build
 
@@ -20,6 +20,13 @@ build: configure
 render: build
 	@mkdir -p out
 	$(BUILD)/bin/raylab render scenes/demo.json -o out/demo.exr --png out/demo.png
+
+# The demo on 2 MPI ranks (needs openmpi-bin: scripts/install-deps.sh --optional). Open MPI
+# refuses to run as root unless told so.
+MPIRUN ?= mpirun -np 2 $(if $(filter 0,$(shell id -u)),--allow-run-as-root)
+render-mpi: build
+	@mkdir -p out
+	$(MPIRUN) $(BUILD)/bin/raylab render scenes/demo.json -o out/demo_mpi.exr --png out/demo_mpi.png
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

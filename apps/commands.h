@@ -14,6 +14,7 @@ extern std::atomic<bool> g_interrupted;
 int renderCommand(const std::vector<std::string>& args, const std::string& commandLine);
 int benchCommand(const std::vector<std::string>& args);
 int accuracyCommand(const std::vector<std::string>& args);
+int compareCommand(const std::vector<std::string>& args);
 
 extern const char* const kRenderHelp;
 

@@ -31,6 +31,7 @@ const char* const kMainHelp =
     "  render SCENE -o OUT.exr [options]   render a scene (.json, .obj or .nff) to OpenEXR\n"
     "  bench accel|limit|primitives ...    benchmarks (BVH vs naive loop, overhead, primitives)\n"
     "  accuracy SCENE [options]            what accuracy costs in time: error vs time sweep\n"
+    "  compare A.exr B.exr                 how far apart two renders are (RMSE, PSNR, identical pixels)\n"
     "\n"
     "Run 'raylab <command> --help' for the options of a command.\n"
     "Exit codes: 0 success, 1 bad input (scene, mesh, file), 2 bad usage, 130 interrupted.\n";
@@ -77,7 +78,9 @@ int main(int argc, char** argv) {
         if (command == "render") return renderCommand(rest, commandLine);
         if (command == "bench") return benchCommand(rest);
         if (command == "accuracy") return accuracyCommand(rest);
-        throw UsageError("unknown command '" + command + "' (expected render, bench or accuracy)");
+        if (command == "compare") return compareCommand(rest);
+        throw UsageError("unknown command '" + command +
+                         "' (expected render, bench, accuracy or compare)");
     } catch (const UsageError& e) {
         std::fprintf(stderr, "raylab: error: %s\n", e.what());
         return 2;

@@ -14,12 +14,16 @@
 #include "apps/commands.h"
 #include "apps/progress_bar.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/distributed/camera_path.h"
+#include "renderer/distributed/frame_sequence.h"
+#include "renderer/distributed/mpi_render.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_writer.h"
 #include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/polygon_options.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
 
@@ -37,6 +41,8 @@ const char* const kRenderHelp =
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects)\n"
+    "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
+    "                           (and PNG/stats files numbered alike)\n"
     "  --quiet                  no progress bar and no summary\n"
     "\n"
     "image:\n"
@@ -58,12 +64,22 @@ const char* const kRenderHelp =
     "  --robust                 Embree's robust traversal (watertight triangle edges)\n"
     "  --precision float|double arithmetic of the analytic intersectors (default double)\n"
     "  --epsilon E              lecture-style self-intersection avoidance: secondary rays accept\n"
-    "                           t > E (default: robust offset along the normal, scaled to |p|)\n";
+    "                           t > E (default: robust offset along the normal, scaled to |p|)\n"
+    "  --polygons watertight|projected|triangles   planar polygons: the watertight ray-space\n"
+    "                           inside test (default), the lecture's projected 2D test, or ear-\n"
+    "                           clipped into Embree triangles (two-sided)\n"
+    "\n"
+    "distributed (docs/distributed.md):\n"
+    "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
+    "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
+    "                           --threads defaults to the cores of a machine / its ranks\n";
 
 namespace {
 
 struct RenderCli {
     std::string scene, exr, png, stats;
+    std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
+    std::string polygons;              ///< --polygons: watertight, projected or triangles
     bool quiet = false, floatPixels = false;
     double exposure = 0;
     RenderOverrides overrides;
@@ -81,6 +97,8 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         } else if (a == "-o" || a == "--output") cli.exr = p.value(a);
         else if (a == "--png") cli.png = p.value(a);
         else if (a == "--stats") cli.stats = p.value(a);
+        else if (a == "--frames") cli.frames = parseFrameRange(p.value(a));
+        else if (a == "--polygons") cli.polygons = p.choice(a, {"watertight", "projected", "triangles"});
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
@@ -133,58 +151,85 @@ void printSummary(const RenderStats& s, const std::string& exr, const std::strin
 int renderCommand(const std::vector<std::string>& args, const std::string& commandLine) {
     const RenderCli cli = parseRenderArgs(args);
     using Clock = std::chrono::steady_clock;
+    // Under mpirun every rank runs this function: MPI starts here (never in
+    // a plain run), all ranks render shares of each frame, rank 0 writes.
+    const MpiSession mpi;
 
     auto t0 = Clock::now();
     Scene scene = loadScene(cli.scene);
+    if (cli.polygons == "triangles") triangulatePolygons(scene);
+    else if (cli.polygons == "projected") setPolygonInsideTest(scene, PolygonTest::Projected);
+    else if (cli.polygons == "watertight") setPolygonInsideTest(scene, PolygonTest::Watertight);
     RenderStats stats;
     stats.parseSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
     const RenderOptions options = resolveRenderOptions(scene, cli.overrides);
     checkMemoryBudget(scene, options);
     applyPrecision(scene, options.precision);
+    // Every frame's camera is checked before the first frame renders.
+    const std::optional<CameraPath> path =
+        cli.frames ? std::optional<CameraPath>(sequenceCameraPath(cli.scene, scene, *cli.frames))
+                   : std::nullopt;
 
     t0 = Clock::now();
     const std::unique_ptr<Accelerator> accel = makeAccelerator(options.accel, scene, options.accelOptions);
     stats.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
     const EffectSet effects = analyseEffects(scene, options);
-    ProgressBar bar("rendering", !cli.quiet && isatty(STDERR_FILENO));
-    RenderResult result = render(scene, *accel, options, effects,
-                                 [&](double f) { bar.update(f); }, &g_interrupted);
-    bar.finish();
-    if (result.cancelled) {
-        std::fprintf(stderr, "raylab: interrupted: no output written\n");
-        return 130;
+    const FrameRange frames = cli.frames.value_or(FrameRange{});
+    for (int frame = frames.first; frame <= frames.last; ++frame) {
+        // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
+        const auto output = [&](const std::string& file) {
+            return cli.frames && !file.empty() ? sequenceFileName(file, frame) : file;
+        };
+        if (path) scene.camera = path->cameraAt(frame);
+        ProgressBar bar(cli.frames ? "frame " + std::to_string(frame) : "rendering",
+                        !cli.quiet && mpi.isRoot() && isatty(STDERR_FILENO));
+        DistributedReport report;
+        RenderResult result = renderDistributed(mpi, scene, *accel, options, effects,
+                                                [&](double f) { bar.update(f); }, &g_interrupted,
+                                                &report);
+        bar.finish();
+        if (result.cancelled) {
+            if (mpi.isRoot())
+                std::fprintf(stderr, "raylab: interrupted: no output written%s\n",
+                             frame > frames.first ? " for this and later frames" : "");
+            return 130;
+        }
+        if (!mpi.isRoot()) continue;  // the other ranks only render
+
+        stats.rays = result.rays;
+        stats.renderSeconds = result.renderSeconds;
+        stats.primitives = scene.primitiveCount();
+        stats.effects = effects.names();
+        stats.threads = threadsPerRank(mpi, options);
+        stats.accel = options.accel;
+        stats.width = options.width;
+        stats.height = options.height;
+        stats.spp = options.spp;
+        stats.maxDepth = options.maxDepth;
+        stats.nonFiniteSamples = result.nonFiniteSamples;
+
+        t0 = Clock::now();
+        ExrOptions exr;
+        exr.floatPixels = cli.floatPixels;
+        exr.commandLine = commandLine;
+        exr.spp = options.spp;
+        exr.maxDepth = options.maxDepth;
+        exr.threads = options.threads;
+        exr.scenePath = cli.scene;
+        exr.accel = options.accel;
+        exr.renderSeconds = result.renderSeconds;
+        writeExr(output(cli.exr), result.film, exr);
+        if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure);
+        stats.writeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson());
+
+        if (!cli.quiet) {
+            printSummary(stats, output(cli.exr), output(cli.png));
+            std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
+        }
     }
-
-    stats.rays = result.rays;
-    stats.renderSeconds = result.renderSeconds;
-    stats.primitives = scene.primitiveCount();
-    stats.effects = effects.names();
-    stats.threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
-    stats.accel = options.accel;
-    stats.width = options.width;
-    stats.height = options.height;
-    stats.spp = options.spp;
-    stats.maxDepth = options.maxDepth;
-    stats.nonFiniteSamples = result.nonFiniteSamples;
-
-    t0 = Clock::now();
-    ExrOptions exr;
-    exr.floatPixels = cli.floatPixels;
-    exr.commandLine = commandLine;
-    exr.spp = options.spp;
-    exr.maxDepth = options.maxDepth;
-    exr.threads = options.threads;
-    exr.scenePath = cli.scene;
-    exr.accel = options.accel;
-    exr.renderSeconds = result.renderSeconds;
-    writeExr(cli.exr, result.film, exr);
-    if (!cli.png.empty()) writePng(cli.png, result.film, cli.exposure);
-    stats.writeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (!cli.stats.empty()) writeFileAtomically(cli.stats, stats.toJson());
-
-    if (!cli.quiet) printSummary(stats, cli.exr, cli.png);
     return 0;
 }
 

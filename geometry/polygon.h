@@ -69,6 +69,8 @@ public:
     const char* kind() const override { return "polygon"; }
 
     const std::vector<Vec3>& vertices() const { return m_vertices; }
+    /// Per-vertex shading normals (NFF "pp"), or empty.
+    const std::vector<Vec3>& normals() const { return m_normals; }
     const Vec3& normal() const { return m_frame.n; }
     FillRule fillRule() const { return m_rule; }
     PolygonTest insideTest() const { return m_test; }

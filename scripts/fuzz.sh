@@ -28,14 +28,18 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
   exit 2
 fi
 for t in "${targets[@]}"; do
-  case "$t" in nff|json|obj) ;; *) echo "fuzz.sh: unknown target '$t' (nff, json, obj)" >&2; exit 2 ;; esac
+  case "$t" in
+    nff|json|obj) ;;
+    *) echo "fuzz.sh: unknown target '$t' (nff, json, obj)" >&2; exit 2 ;;
+  esac
 done
 
 build=${BUILD:-build-fuzz-targets}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 # clang and its libFuzzer runtime (libclang-rt-14-dev) are optional packages.
-if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
+runtime=(/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a)
+if ! command -v clang++ >/dev/null || [[ ! -f "${runtime[0]}" ]]; then
   scripts/install-deps.sh --optional
 fi
 
@@ -70,16 +74,21 @@ for t in "${targets[@]}"; do
   for f in tests/robustness/inputs/"$t"-*; do [[ -f "$f" ]] && regressions+=("$f"); done
   if [[ "$seconds" -eq 0 ]]; then
     echo "== fuzz_$t: replaying tests/fuzz/corpus/$t and ${#regressions[@]} regression inputs"
+    ok=1
     if ! "$exe" "${common[@]}" ${FUZZ_ARGS:-} -runs=0 "tests/fuzz/corpus/$t" >"$log" 2>&1; then
-      status=1
-      tail -30 "$log"
+      ok=0
     fi
     if [[ ${#regressions[@]} -gt 0 ]] &&
        ! "$exe" "${common[@]}" ${FUZZ_ARGS:-} "${regressions[@]}" >>"$log" 2>&1; then
+      ok=0
+    fi
+    if [[ $ok -eq 1 ]]; then
+      summary+=("fuzz_$t: replay ok")
+    else
       status=1
       tail -30 "$log"
+      summary+=("fuzz_$t: replay FAILED (log: $log)")
     fi
-    summary+=("fuzz_$t: replay $( [[ $status -eq 0 ]] && echo ok || echo FAILED )")
     continue
   fi
   max_len=4096
@@ -93,13 +102,15 @@ for t in "${targets[@]}"; do
     echo "fuzz_$t: FINDING (input saved under $crashes/):"
     grep -E "ERROR|SUMMARY|finding|deadly|timeout|out-of-memory|uncaught" "$log" | head -10
   fi
-  execs=$(grep -Eo 'stat::number_of_executed_units: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
-  rate=$(grep -Eo 'stat::average_exec_per_sec: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
-  rss=$(grep -Eo 'stat::peak_rss_mb: +[0-9]+' "$log" | grep -Eo '[0-9]+$' || echo "?")
+  fuzzstat() { grep -Eo "stat::$1: +[0-9]+" "$log" | grep -Eo '[0-9]+$' || echo "?"; }
+  execs=$(fuzzstat number_of_executed_units)
+  rate=$(fuzzstat average_exec_per_sec)
+  rss=$(fuzzstat peak_rss_mb)
   size=$(find "$corpus" -type f | wc -l)
   cov=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || true)
   found=$(find "$crashes" -type f | wc -l)
-  summary+=("fuzz_$t: ${seconds} s, $execs execs, $rate exec/s, corpus $size files, $cov, peak RSS ${rss} MB, $found saved findings")
+  line="fuzz_$t: ${seconds} s, $execs execs, $rate exec/s, corpus $size files, $cov"
+  summary+=("$line, peak RSS ${rss} MB, $found saved findings")
 done
 
 echo

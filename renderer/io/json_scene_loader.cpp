@@ -277,7 +277,9 @@ Scene SceneReader::read(const JsonValue& root) {
              std::string("a scene file must be a JSON object ({...}), got ") + root.typeName());
     const Fields top(
         *this, root, "", "a scene",
-        {"image", "render", "camera", "background", "ambient", "lights", "materials", "objects"});
+        // "camera_path" (--frames sequences) is read by renderer/distributed/camera_path.cpp.
+        {"image", "render", "camera", "background", "ambient", "lights", "materials", "objects",
+         "camera_path"});
     if (const JsonValue* v = top.get("image")) readImage(*v, "image");
     if (const JsonValue* v = top.get("render")) readRenderSettings(*v, "render");
     readCamera(top.need("camera"), "camera");

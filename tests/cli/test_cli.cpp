@@ -104,3 +104,28 @@ TEST_CASE("cli: the same render is byte-identical for 1 and 2 threads") {
                      " --threads 2 --quiet").exitCode == 0);
     CHECK(cli::slurp(dir.file("1.png")) == cli::slurp(dir.file("2.png")));
 }
+
+TEST_CASE("cli: compare reports identical and differing renders; --polygons triangles") {
+    cli::TempDir dir;
+    const std::string scene = dir.write("poly.json", R"({
+  "image": {"width": 24, "height": 16},
+  "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
+  "ambient": 0.2,
+  "lights": [{"type": "point", "position": [1, 2, 4]}],
+  "objects": [{"type": "polygon", "vertices": [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [0, 0.2, 0], [-1, 1, 0]]}]
+})");
+    const std::string a = dir.file("a.exr"), b = dir.file("b.exr"), c = dir.file("c.exr");
+    REQUIRE(cli::run("render " + scene + " -o " + a + " --quiet --float").exitCode == 0);
+    REQUIRE(cli::run("render " + scene + " -o " + b + " --quiet --float --threads 1").exitCode == 0);
+    REQUIRE(cli::run("render " + scene + " -o " + c + " --quiet --float --polygons triangles").exitCode == 0);
+    const cli::Result same = cli::run("compare " + a + " " + b);
+    CHECK(same.exitCode == 0);
+    CHECK(same.out.find("bit-identical:     384 (100.0000%)") != std::string::npos);
+    // The concave pentagon ear-clipped into triangles covers the same pixels;
+    // only the shading of edge pixels may differ in the last bits.
+    const cli::Result tri = cli::run("compare " + a + " " + c + " --threshold 0.01");
+    CHECK((tri.exitCode == 0 || tri.exitCode == 3));
+    CHECK(tri.out.find("over 0.01          0 pixels") != std::string::npos);
+    CHECK(cli::run("compare " + a).exitCode == 2);
+    CHECK(cli::run("compare " + a + " " + dir.file("missing.exr")).exitCode == 1);
+}

@@ -14,7 +14,9 @@ namespace {
 
 /// A valid scene; `objects` (a JSON array body) and `extra` (members) are spliced in.
 /// Line 1 "{", line 2 camera, line 3 lights, line 4 objects.
-std::string scene(const std::string& objects = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
+const char* const kSphere = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})";
+
+std::string scene(const std::string& objects = kSphere,
                   const std::string& camera = R"("eye": [0, 0, 5], "look_at": [0, 0, 0])",
                   const std::string& extra = "") {
     return "{\n"
@@ -74,10 +76,13 @@ TEST_CASE("json: a file truncated in the middle of an entity names the last line
 TEST_CASE("json: NaN, infinities and out-of-range numbers are refused with their line") {
     refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": NaN})"), 4, "NaN");
     refused(scene(R"({"type": "sphere", "center": [Infinity, 0, 0], "radius": 1})"), 4, "infinity");
-    refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e400})"), 4, "out of range");
-    refused(scene(R"({"type": "sphere", "center": [-1e400, 0, 0], "radius": 1})"), 4, "out of range");
+    refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e400})"), 4,
+            "out of range");
+    refused(scene(R"({"type": "sphere", "center": [-1e400, 0, 0], "radius": 1})"), 4,
+            "out of range");
     refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": -nan})"), 4, "");
-    refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0x10})"), 4, "invalid number");
+    refused(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0x10})"), 4,
+            "invalid number");
 }
 
 TEST_CASE("json: zero, negative and absurd counts and resolutions are refused") {
@@ -109,7 +114,8 @@ TEST_CASE("json: a degenerate camera is refused at the camera's line") {
     refused(scene(objs, R"("eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 0, 3])"), 2,
             "parallel");
     refused(scene(objs, R"("eye": [0, 0, 5], "look_at": [0, 0, 0], "fov": 0)"), 2, "camera.fov");
-    refused(scene(objs, R"("type": "orthographic", "eye": [0, 0, 5], "direction": [0, 0, 0], "width": 2)"),
+    refused(scene(objs, R"("type": "orthographic", "eye": [0, 0, 5], "direction": [0, 0, 0],
+                            "width": 2)"),
             2, "camera.direction");
     refused(scene(objs, R"("eye": [1e308, 0, 0], "look_at": [-1e308, 0, 0])"), 2, "");
 }
@@ -211,7 +217,8 @@ TEST_CASE("json: mesh files that are missing, broken, or miss their MTL") {
     {
         Scratch dir;
         dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
-        const std::string path = dir.write("scene.json", scene(R"({"type": "mesh", "file": "bad.obj"})"));
+        const std::string path =
+            dir.write("scene.json", scene(R"({"type": "mesh", "file": "bad.obj"})"));
         checkRefused(runRaylab(tinyRender(dir, path)), dir, {"scene.json", "bad.obj"}, 1,
                      dir.file("bad.obj") + ":4:", "vertex 4");
     }

@@ -47,7 +47,8 @@ TEST_CASE("memory guard: a huge JSON image is refused up front") {
     const std::string scene = dir.write(
         "big.json", "{\"image\": {\"width\": 32768, \"height\": 32768},\n"
                     " \"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-                    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n");
+                    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0],"
+                    " \"radius\": 1}]}\n");
     const RunResult r =
         runRaylab({"render", scene, "-o", dir.file("out.exr"), "--quiet"}, 30);
     checkRefused(r, dir, {"big.json"}, 1, scene + ":", "32768x32768");
