@@ -82,16 +82,16 @@ int main(int argc, char** argv) {
         throw UsageError("unknown command '" + command +
                          "' (expected render, bench, accuracy or compare)");
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "raylab: error: %s\n", e.what());
+        std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.what()).c_str());
         return 2;
     } catch (const InputError& e) {
-        std::fprintf(stderr, "raylab: error: %s\n", e.located().c_str());
+        std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.located()).c_str());
         return 1;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "raylab: error: out of memory\n");
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "raylab: error: %s\n", e.what());
+        std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.what()).c_str());
         return 1;
     }
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Errors that reach the user as one line: "raylab: error: FILE:LINE: message".
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,30 @@ private:
     std::string m_file;
     int m_line = 0;
 };
+
+/// Makes text that may quote user input safe for a one-line terminal message:
+/// control bytes (including newlines and escape sequences) become \xNN, and a
+/// message longer than maxLength is cut, marked with "...".
+inline std::string terminalSafe(const std::string& text, size_t maxLength = 300) {
+    static const char* const kHex = "0123456789abcdef";
+    std::string out;
+    out.reserve(std::min(text.size(), maxLength) + 8);
+    for (const char ch : text) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        if (c < 0x20 || c == 0x7f) {
+            out += "\\x";
+            out += kHex[c >> 4];
+            out += kHex[c & 15];
+        } else {
+            out += ch;
+        }
+        if (out.size() >= maxLength) {
+            out += "...";
+            break;
+        }
+    }
+    return out;
+}
 
 /// Bad command-line usage: exit code 2.
 class UsageError : public std::runtime_error {

@@ -410,7 +410,7 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     model.warnings = warn.lines();
     if (options.printWarnings)
         for (const std::string& w : model.warnings)
-            std::fprintf(stderr, "raylab: warning: %s: %s\n", path.c_str(), w.c_str());
+            std::fprintf(stderr, "raylab: warning: %s\n", terminalSafe(path + ": " + w).c_str());
     return model;
 }
 
