@@ -143,10 +143,21 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
         float& tfar = RTCRayN_tfar(rays, n, i);
-        // Exact path: strict tMin < t < best-so-far in double, NaN-safe (Shape contract).
-        const std::optional<ShapeHit> h =
-            exact ? shape.intersect(*ctx.ray, ctx.tMin, ctx.bestT)
-                  : shape.intersect(laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i), tfar);
+        const uint32_t object = table.objects[args->primID];
+        std::optional<ShapeHit> h;
+        if (exact) {
+            // Strict tMin < t < best-so-far in double (Shape contract). Exact
+            // ties (coplanar surfaces, e.g. a cone's cap on the floor) go to
+            // the lower object index, as in the naive loop, which visits
+            // objects in order: so the limit is opened by one ulp for a
+            // lower-indexed object and the tie is settled here.
+            const bool winsTies = ctx.exactHit && object < ctx.bestObject;
+            const double tMax = winsTies ? std::nextafter(ctx.bestT, std::numeric_limits<double>::infinity()) : ctx.bestT;
+            h = shape.intersect(*ctx.ray, ctx.tMin, tMax);
+            if (h && !(h->t < ctx.bestT || (winsTies && h->t == ctx.bestT))) continue;
+        } else {
+            h = shape.intersect(laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i), tfar);
+        }
         if (!h) continue;
         // A triangle may already have shrunk tfar below this (double) hit.
         const float t = static_cast<float>(h->t);
@@ -168,7 +179,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
             ctx.bestT = h->t;
             ctx.bestU = h->u;
             ctx.bestV = h->v;
-            ctx.bestObject = table.objects[args->primID];
+            ctx.bestObject = object;
             ctx.exactHit = true;
         }
     }
