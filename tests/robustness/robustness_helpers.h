@@ -81,6 +81,12 @@ inline std::vector<std::string> lines(const std::string& text) {
     return out;
 }
 
+/// At most the first 300 bytes of `s`, for failure messages: a test that
+/// catches a 1 MB error line must not print it.
+inline std::string head(const std::string& s) {
+    return s.size() <= 300 ? s : s.substr(0, 300) + "... (" + std::to_string(s.size()) + " bytes)";
+}
+
 inline bool startsWith(const std::string& s, const std::string& prefix) {
     return s.compare(0, prefix.size(), prefix) == 0;
 }
@@ -219,7 +225,8 @@ inline std::vector<std::string> tinyRender(const Scratch& dir, const std::string
 inline void checkRefused(const RunResult& r, const Scratch& dir,
                          const std::vector<std::string>& inputs, int code,
                          const std::string& location, const std::string& fragment) {
-    CAPTURE(r.err);
+    const std::string err = head(r.err);
+    CAPTURE(err);
     CHECK_FALSE(r.timedOut);
     CHECK(r.exitCode == code);
     const std::vector<std::string> errLines = lines(r.err);
@@ -244,7 +251,8 @@ inline void checkRefused(const RunResult& r, const Scratch& dir,
 /// temporary file left, and stderr holding only "raylab: warning: " lines.
 inline void checkRendered(const RunResult& r, const Scratch& dir,
                           const std::vector<std::string>& inputs) {
-    CAPTURE(r.err);
+    const std::string err = head(r.err);
+    CAPTURE(err);
     CHECK_FALSE(r.timedOut);
     CHECK(r.exitCode == 0);
     for (const std::string& line : lines(r.err)) CHECK(startsWith(line, "raylab: warning: "));

@@ -91,7 +91,8 @@ TEST_CASE("command line: unwritable outputs fail with one line and leave no temp
     // The stats file cannot be written.
     const RunResult stats =
         runRaylab(args({"-o", dir.file("a.exr"), "--stats", dir.file("no/dir/s.json")}));
-    CAPTURE(stats.err);
+    const std::string err = head(stats.err);
+    CAPTURE(err);
     CHECK(stats.exitCode == 1);
     CHECK(lines(stats.err).size() == 1);
     CHECK(startsWith(stats.err, "raylab: error: " + dir.file("no/dir/s.json") + ":"));

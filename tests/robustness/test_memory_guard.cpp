@@ -91,7 +91,8 @@ TEST_CASE("memory guard: a tiny file cannot expand into an unbounded scene") {
         "   \"edge_u\": [2, 0, 0], \"edge_v\": [0, 0, 2], \"divisions\": 4096,\n"
         "   \"materials\": [\"a\", \"b\"]}]}\n");
     const RunResult r = runRaylab(tinyRender(dir, scene), 60);
-    CAPTURE(r.err);
+    const std::string err = head(r.err);
+    CAPTURE(err);
     CAPTURE(r.seconds);
     CHECK_FALSE(r.timedOut);
     CHECK((r.exitCode == 0 || r.exitCode == 1));
