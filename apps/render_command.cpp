@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -172,7 +173,14 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
                    : std::nullopt;
 
     t0 = Clock::now();
-    const std::unique_ptr<Accelerator> accel = makeAccelerator(options.accel, scene, options.accelOptions);
+    // Geometry the accelerator cannot take (beyond float range relative to
+    // the eye) is a problem of the scene file: report it as such.
+    std::unique_ptr<Accelerator> accel;
+    try {
+        accel = makeAccelerator(options.accel, scene, options.accelOptions);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(cli.scene, 0, e.what());
+    }
     stats.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
     const EffectSet effects = analyseEffects(scene, options);

@@ -54,8 +54,12 @@ struct PolygonParams {
 };
 std::unique_ptr<Shape> makePolygon(const PolygonParams& params);
 
+/// Largest polygon triangulatePolygon accepts (ear clipping is quadratic).
+constexpr size_t kMaxTriangulatedVertices = 16384;
+
 /// Triangulates a simple planar polygon (convex or concave) by ear clipping;
-/// returns indices into `vertices`, wound like the polygon.
+/// returns indices into `vertices`, wound like the polygon. Throws
+/// std::invalid_argument beyond kMaxTriangulatedVertices vertices.
 std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3>& vertices);
 
 }  // namespace raylab

@@ -41,6 +41,14 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3>&
         throwInvalid("triangulate",
                      "needs at least 3 vertices (got " + std::to_string(vertices.size()) + ")");
     }
+    // Ear clipping is quadratic: 20000 vertices take ~2 s, 300000 would take
+    // many minutes. Beyond the cap the analytic polygon is the right tool.
+    if (vertices.size() > kMaxTriangulatedVertices) {
+        throwInvalid("triangulate", "a polygon of " + std::to_string(vertices.size()) +
+                                        " vertices exceeds the ear-clipping limit of " +
+                                        std::to_string(kMaxTriangulatedVertices) +
+                                        " (render it as an analytic polygon)");
+    }
     for (size_t i = 0; i < vertices.size(); ++i) {
         requireFinite("triangulate", "vertex", vertices[i]);
     }

@@ -1,5 +1,7 @@
 #include "renderer/io/obj_loader.h"
 
+#include "geometry/primitives.h"
+
 #include <tiny_obj_loader.h>
 
 #include <cmath>
@@ -191,6 +193,7 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
         if (kw == "v") ++vSoFar;
         if (kw == "vn") ++vnSoFar;
         if (kw != "f" || bad.first > 0) return;
+        size_t corners = 0;
         while (true) {
             while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
             if (q >= eol) break;
@@ -199,6 +202,13 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
             while (ce < eol && *ce != ' ' && *ce != '\t' && *ce != '\r') ++ce;
             const std::string corner(q, ce);
             q = ce;
+            // tinyobjloader's ear clipping is quadratic: a 200000-corner face
+            // would take many minutes, so faces beyond the limit are refused.
+            if (++corners > kMaxTriangulatedVertices) {
+                bad = {line, "face has more than " + std::to_string(kMaxTriangulatedVertices) +
+                                 " corners (the triangulation limit)"};
+                return;
+            }
             std::string message = check(std::strtol(corner.c_str(), nullptr, 10), vSoFar, vTotal,
                                         "vertex", "vertices");
             const size_t s1 = corner.find('/');
@@ -208,6 +218,33 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
                                 "normal", "normals");
             if (!message.empty()) {
                 bad = {line, message};
+                return;
+            }
+        }
+    });
+    return bad;
+}
+
+/// Finds the first v/vn/vt line with a coordinate that is not a finite
+/// number. tinyobjloader reads "nan", "inf" and words it cannot parse as 0
+/// without a word, which would silently make a different mesh.
+/// Returns {line, message} or {0, ""}.
+std::pair<int, std::string> findBadCoordinate(const std::string& text) {
+    std::pair<int, std::string> bad{0, ""};
+    forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
+        if (bad.first > 0 || (kw != "v" && kw != "vn" && kw != "vt")) return;
+        while (true) {
+            while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
+            if (q >= eol) break;
+            const char* te = q;
+            while (te < eol && *te != ' ' && *te != '\t' && *te != '\r') ++te;
+            const std::string token(q, te);
+            q = te;
+            char* end = nullptr;
+            const double x = std::strtod(token.c_str(), &end);
+            if (end != token.c_str() + token.size() || !std::isfinite(x)) {
+                bad = {line, "'" + kw + "': coordinate '" + token.substr(0, 40) +
+                                 "' is not a finite number"};
                 return;
             }
         }
@@ -297,6 +334,8 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     // tinyobjloader only warns about bad indices (reporting the file's last
     // line) and may read out of bounds first; check them here with the real line.
     if (const auto [line, message] = findBadFaceIndex(text); line > 0)
+        throw InputError(path, line, message);
+    if (const auto [line, message] = findBadCoordinate(text); line > 0)
         throw InputError(path, line, message);
 
     tinyobj::attrib_t attrib;
