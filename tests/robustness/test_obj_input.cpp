@@ -107,6 +107,12 @@ TEST_CASE("obj: NaN, infinite and overflowing vertices are refused") {
     refused("v 0 0 0\nv 3e38 0 0\nv 0 3e38 0\nf 1 2 3\n", 0, "");
 }
 
+TEST_CASE("obj: a trailing comment on a vertex line is not a bad coordinate") {
+    // tinyobjloader reads "v 0 0 0 # origin" as the origin; a check for
+    // non-numeric coordinates must stop at the comment.
+    rendered("v 0 0 0 # origin\nv 1 0 0\t# x\nv 0 1 0\nvn 0 0 1 # up\nf 1//1 2//1 3//1\n");
+}
+
 TEST_CASE("obj: broken MTL files are refused naming the material") {
     // tinyobjloader reads "nan" as a number of its own choosing: either way is fine.
     handled("mtllib m.mtl\nusemtl a\n" + kTriangle, 60, {{"m.mtl", "newmtl a\nKd nan 0 0\n"}});
