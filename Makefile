@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build render render-mpi test clean test-sanitize
+.PHONY: all deps configure build render render-mpi test clean test-sanitize fuzz
 
 all: build
 
@@ -34,5 +34,12 @@ test: build
 test-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DRAYLAB_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
 
+# libFuzzer targets for the NFF, JSON and OBJ readers (clang + ASan/UBSan),
+# FUZZ_SECONDS each (docs/robustness.md).
+FUZZ_SECONDS ?= 60
+fuzz:
+	@scripts/install-deps.sh --optional
+	scripts/fuzz.sh $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD) build-sanitize out
+	rm -rf $(BUILD) build-sanitize build-fuzz-targets out
