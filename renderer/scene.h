@@ -32,6 +32,10 @@ struct Object {
     std::shared_ptr<const TriangleMesh> mesh;  ///< triangle mesh, or null
     uint32_t material = 0;                     ///< index into Scene::materials
     std::vector<uint32_t> faceMaterials;       ///< meshes: per-triangle material, or empty
+    /// Meshes: which side of a triangle can be hit; the front is where its
+    /// vertices run counter-clockwise. Two-sided by default (OBJ); NFF's
+    /// opaque triangles are one-sided. Analytic shapes carry their own.
+    Sidedness meshSides = Sidedness::Both;
 
     bool isMesh() const { return mesh != nullptr; }
     size_t primitiveCount() const { return isMesh() ? mesh->triangleCount() : 1; }

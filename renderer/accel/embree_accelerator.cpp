@@ -203,6 +203,21 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+/// Filters of one-sided triangle meshes. Embree's triangle Ng is
+/// (v1 - v0) × (v2 - v0), so a hit is on the front (counter-clockwise) side
+/// when dot(d, Ng) < 0; a hit on the culled side is rejected (valid = 0) and
+/// traversal continues behind it.
+template <bool KeepFront>
+void cullTriangleSide(const RTCFilterFunctionNArguments* args) {
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const float facing = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
+                             RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
+                             RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
+        if ((facing < 0) != KeepFront) args->valid[i] = 0;
+    }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -319,6 +334,13 @@ void EmbreeAccelerator::addMesh(const Object& object, uint32_t objectIndex,
     m_device.check("rtcSetNewGeometryBuffer(INDEX)");
     for (size_t j = 0; j < kept.size(); ++j)
         for (int k = 0; k < 3; ++k) indices[3 * j + k] = mesh.triangles[kept[j]][k];
+    if (object.meshSides != Sidedness::Both) {
+        const RTCFilterFunctionN cull = object.meshSides == Sidedness::Outside
+                                            ? &cullTriangleSide<true>
+                                            : &cullTriangleSide<false>;
+        rtcSetGeometryIntersectFilterFunction(geom.get(), cull);
+        rtcSetGeometryOccludedFilterFunction(geom.get(), cull);
+    }
     rtcSetGeometryBuildQuality(geom.get(), quality);
     rtcCommitGeometry(geom.get());
     m_device.check("rtcCommitGeometry(TRIANGLE)");

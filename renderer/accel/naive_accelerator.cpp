@@ -22,13 +22,21 @@ Surface Surface::analytic(const Shape& shape, uint32_t object) {
     return s;
 }
 
-Surface Surface::triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim) {
+Surface Surface::triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim,
+                          Sidedness sides) {
     Surface s;
+    s.m_sides = sides;
     const auto& idx = mesh.triangles[prim];
     s.m_vertices = {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
     s.m_object = object;
     s.m_prim = prim;
     return s;
+}
+
+bool Surface::acceptsTriangleFacing(const Vec3& d) const {
+    if (m_sides == Sidedness::Both) return true;
+    const Vec3 n = triangleNormal(m_vertices[0], m_vertices[1], m_vertices[2]);
+    return acceptsFacing(m_sides, dot(d, n) < 0);
 }
 
 std::optional<Hit> Surface::hit(const Ray& ray, const WatertightRay& wray, double tMin,
@@ -39,14 +47,15 @@ std::optional<Hit> Surface::hit(const Ray& ray, const WatertightRay& wray, doubl
         return Hit{h->t, m_object, m_prim, h->u, h->v};
     }
     const auto h = intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax);
-    if (!h) return std::nullopt;
+    if (!h || !acceptsTriangleFacing(ray.d)) return std::nullopt;
     return Hit{h->t, m_object, m_prim, h->u, h->v};
 }
 
 bool Surface::occluded(const Ray& ray, const WatertightRay& wray, double tMin, double tMax) const {
     if (m_shape) return m_shape->occluded(ray, tMin, tMax);
-    return intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
-        .has_value();
+    return acceptsTriangleFacing(ray.d) &&
+           intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
+               .has_value();
 }
 
 Bounds3 Surface::bounds() const {
@@ -71,7 +80,8 @@ NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
                                                     std::to_string(index) + " of " +
                                                     std::to_string(o.mesh->positions.size()));
             for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
-                m_surfaces.push_back(Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t)));
+                m_surfaces.push_back(
+                    Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t), o.meshSides));
         } else if (o.shape) {
             m_surfaces.push_back(Surface::analytic(*o.shape, object));
         }

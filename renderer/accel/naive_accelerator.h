@@ -26,7 +26,8 @@ public:
     /// An entry for the analytic shape of object `object`.
     static Surface analytic(const Shape& shape, uint32_t object);
     /// An entry for triangle `prim` of `mesh`, belonging to object `object`.
-    static Surface triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim);
+    static Surface triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim,
+                            Sidedness sides = Sidedness::Both);
 
     /// \brief Closest hit with tMin < t < tMax, as the accelerator reports it
     ///   (object and primitive filled in), or nothing.
@@ -47,6 +48,9 @@ private:
 
     const Shape* m_shape = nullptr;  ///< analytic entry; null for a triangle
     std::array<Vec3, 3> m_vertices;  ///< triangle entry
+    Sidedness m_sides = Sidedness::Both;  ///< triangle entry: which side can be hit
+    /// Whether a triangle hit from direction d is on an accepted side.
+    bool acceptsTriangleFacing(const Vec3& d) const;
     uint32_t m_object = 0;
     uint32_t m_prim = 0;
 };

@@ -780,6 +780,13 @@ void SceneReader::readCheckerboard(const Fields& f, const std::string& name) {
         } else {
             nu = nv = integer(*d, f.path("divisions"), 1, 4096);
         }
+        // Two triangles per square, built before the first pixel and not
+        // interruptible: a 300-byte file must not ask for 33 million.
+        constexpr long kMaxSquares = 512L * 512L;
+        if (long(nu) * nv > kMaxSquares)
+            fail(*d, f.path("divisions"),
+                 std::to_string(nu) + " x " + std::to_string(nv) + " squares exceed the limit of " +
+                     std::to_string(kMaxSquares) + " (512 x 512)");
     }
     const JsonValue& mats = array(f.need("materials"), f.path("materials"));
     if (mats.size() != 2)

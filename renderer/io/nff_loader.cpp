@@ -526,10 +526,12 @@ private:
         return true;
     }
 
-    /// Triangles gather into one mesh per kind (flat or smooth).
+    /// Triangles gather into one mesh per kind (flat or smooth) and per
+    /// sidedness: one-sided like every NFF object, two-sided for transmitters.
     void addTriangle(uint32_t material, bool patch) {
-        TriangleMesh& m = patch ? m_smooth : m_flat;
-        std::vector<uint32_t>& mats = patch ? m_smoothMaterials : m_flatMaterials;
+        const bool twoSided = m_materials[material].transmissive();
+        TriangleMesh& m = m_meshes[patch][twoSided];
+        std::vector<uint32_t>& mats = m_meshMaterials[patch][twoSided];
         const uint32_t base = uint32_t(m.positions.size());
         for (int i = 0; i < 3; ++i) {
             m.positions.push_back(m_vertices[i]);
@@ -539,10 +541,12 @@ private:
         mats.push_back(material);
     }
 
-    void addMesh(TriangleMesh& mesh, std::vector<uint32_t>& materials, const char* name) {
+    void addMesh(TriangleMesh& mesh, std::vector<uint32_t>& materials, const char* name,
+                 Sidedness sides) {
         if (mesh.triangles.empty()) return;
         Object o;
         o.name = name;
+        o.meshSides = sides;
         o.material = materials.front();
         // One material for all faces needs no per-face table.
         bool uniform = true;
@@ -594,8 +598,10 @@ private:
             light.intensity = l.hasColor ? l.color : Color(intensity);
             s.lights.push_back(light);
         }
-        addMesh(m_flat, m_flatMaterials, "triangles");
-        addMesh(m_smooth, m_smoothMaterials, "patches");
+        addMesh(m_meshes[0][0], m_meshMaterials[0][0], "triangles", Sidedness::Outside);
+        addMesh(m_meshes[0][1], m_meshMaterials[0][1], "transmissive triangles", Sidedness::Both);
+        addMesh(m_meshes[1][0], m_meshMaterials[1][0], "patches", Sidedness::Outside);
+        addMesh(m_meshes[1][1], m_meshMaterials[1][1], "transmissive patches", Sidedness::Both);
         s.materials = std::move(m_materials);
         s.objects = std::move(m_objects);
         return s;
@@ -623,8 +629,8 @@ private:
     std::vector<Material> m_materials;
     std::vector<Object> m_objects;
     std::vector<Vec3> m_vertices, m_normals;  ///< reused per polygon
-    TriangleMesh m_flat, m_smooth;
-    std::vector<uint32_t> m_flatMaterials, m_smoothMaterials;
+    TriangleMesh m_meshes[2][2];                  ///< [patch][two-sided]
+    std::vector<uint32_t> m_meshMaterials[2][2];  ///< per-face materials of each
 };
 
 }  // namespace

@@ -233,6 +233,12 @@ std::pair<int, std::string> findBadCoordinate(const std::string& text) {
     std::pair<int, std::string> bad{0, ""};
     forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
         if (bad.first > 0 || (kw != "v" && kw != "vn" && kw != "vt")) return;
+        // A '#' starts a comment, also after the coordinates.
+        for (const char* c = q; c < eol; ++c)
+            if (*c == '#') {
+                eol = c;
+                break;
+            }
         while (true) {
             while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
             if (q >= eol) break;
