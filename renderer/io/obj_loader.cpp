@@ -193,6 +193,11 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
         if (kw == "v") ++vSoFar;
         if (kw == "vn") ++vnSoFar;
         if (kw != "f" || bad.first > 0) return;
+        for (const char* c = q; c < eol; ++c)  // a '#' starts a trailing comment
+            if (*c == '#') {
+                eol = c;
+                break;
+            }
         size_t corners = 0;
         while (true) {
             while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
