@@ -16,26 +16,11 @@ Bounds3 Disk::bounds() const {
 
 template <class T>
 std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMax) const {
-    using V = Vec3T<T>;
-    const V n(m_frame.n);
-    // Relative to the centre, subtracted in double before rounding to T.
-    const V c{};
-    const V o(ray.o - m_centre);
-    const V d(ray.d);
-
-    T t, cosine;
-    if (!intersectPlane(n, c, o, d, t, cosine)) return std::nullopt;
-    if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
-    const double td = static_cast<double>(t);
-    if (!(tMin < td && td < tMax)) return std::nullopt;
-
-    const V local = o + d * t - c;
+    const auto h = intersectFramedPlane<T>(m_frame, m_centre, m_sides, ray, tMin, tMax);
+    if (!h) return std::nullopt;
     const T r = static_cast<T>(m_radius);
-    // Distance within the plane; the normal component is rounding noise.
-    const T u = dot(local, V(m_frame.t));
-    const T v = dot(local, V(m_frame.b));
-    if (!(u * u + v * v <= r * r)) return std::nullopt;
-    return ShapeHit{td, static_cast<double>(u / r), static_cast<double>(v / r)};
+    if (!(h->u * h->u + h->v * h->v <= r * r)) return std::nullopt;
+    return ShapeHit{h->t, static_cast<double>(h->u / r), static_cast<double>(h->v / r)};
 }
 
 std::optional<ShapeHit> Disk::intersect(const Ray& ray, double tMin, double tMax) const {

@@ -22,26 +22,11 @@ Bounds3 Plane::bounds() const {
 
 template <class T>
 std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tMax) const {
-    using V = Vec3T<T>;
-    const V n(m_frame.n);
-    // Relative to the plane's point, subtracted in double before rounding to T.
-    const V o(ray.o - m_point);
-    const V d(ray.d);
-    const V p0{};
-
-    T t, cosine;
-    if (!intersectPlane(n, p0, o, d, t, cosine)) return std::nullopt;
-    if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
-    const double td = static_cast<double>(t);
-    if (!(tMin < td && td < tMax)) return std::nullopt;
-
-    // In-plane offset of the hit from the point: d·t - (p0 - o).
-    const V local = o + d * t - p0;
-    const T u = dot(local, V(m_frame.t));
-    const T v = dot(local, V(m_frame.b));
-    const T h = static_cast<T>(m_halfExtent);
-    if (!(std::abs(u) <= h && std::abs(v) <= h)) return std::nullopt;
-    return ShapeHit{td, static_cast<double>(u), static_cast<double>(v)};
+    const auto h = intersectFramedPlane<T>(m_frame, m_point, m_sides, ray, tMin, tMax);
+    if (!h) return std::nullopt;
+    const T e = static_cast<T>(m_halfExtent);
+    if (!(std::abs(h->u) <= e && std::abs(h->v) <= e)) return std::nullopt;
+    return ShapeHit{h->t, static_cast<double>(h->u), static_cast<double>(h->v)};
 }
 
 std::optional<ShapeHit> Plane::intersect(const Ray& ray, double tMin, double tMax) const {

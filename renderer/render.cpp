@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "geometry/random.h"
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
 
@@ -44,10 +45,7 @@ void storeFirstHit(Film& film, size_t i, const FirstHit& f) {
 
 /// Per-pixel seed: a 64-bit mix of the render seed and the pixel index.
 uint64_t pixelSeed(uint64_t seed, uint64_t pixel) {
-    uint64_t z = seed * 0x9E3779B97F4A7C15ULL + pixel + 0x632BE59BD9B4E019ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    return mix64(seed * SplitMix64::kGamma + pixel + 0x632BE59BD9B4E019ULL);
 }
 
 Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,

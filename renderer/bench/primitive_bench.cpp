@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/primitives.h"
+#include "geometry/random.h"
 #include "geometry/shape.h"
 
 namespace raylab {
@@ -23,26 +24,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kRays = 1024;
 
-/// SplitMix64: the same ray sets on every platform and run.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : m_state(seed) {}
-    double uniform() {
-        uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    Vec3 direction() {
-        const double z = uniform(-1, 1), phi = uniform(0, 2 * kPi);
-        const double s = std::sqrt(std::max(0.0, 1 - z * z));
-        return {s * std::cos(phi), s * std::sin(phi), z};
-    }
-
-private:
-    uint64_t m_state;
-};
+/// The same ray sets on every platform and run.
+using Rng = SplitMix64;
 
 struct Case {
     std::string name;

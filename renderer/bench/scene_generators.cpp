@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "geometry/primitives.h"
+#include "geometry/random.h"
 
 namespace raylab {
 
@@ -16,24 +17,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// SplitMix64: a tiny generator with the same sequence on every platform, so
-/// a (size, seed) pair always yields the same scene.
-class SplitMix64 {
-public:
-    explicit SplitMix64(uint64_t seed) : m_state(seed) {}
-    uint64_t next() {
-        uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    /// Uniform in [0, 1) with 53 random bits.
-    double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-    uint64_t m_state;
-};
 
 Object shapeObject(std::string name, std::unique_ptr<Shape> shape, uint32_t material) {
     Object o;

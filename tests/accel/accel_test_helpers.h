@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "geometry/primitives.h"
+#include "geometry/random.h"
 #include "geometry/shape.h"
 #include "geometry/triangle_mesh.h"
 #include "renderer/scene.h"
@@ -21,31 +22,8 @@ namespace raylab::accel_test {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
-/// SplitMix64: the same sequence on every platform.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : m_state(seed) {}
-    uint64_t next() {
-        uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    /// Uniform in [0, 1).
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    Vec3 point(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
-    /// Uniform direction on the unit sphere.
-    Vec3 direction() {
-        const double z = uniform(-1, 1);
-        const double phi = uniform(0, 2 * kPi);
-        const double s = std::sqrt(std::max(0.0, 1 - z * z));
-        return {s * std::cos(phi), s * std::sin(phi), z};
-    }
-
-private:
-    uint64_t m_state;
-};
+/// Deterministic test rays and points (geometry/random.h).
+using Rng = SplitMix64;
 
 /// Object wrapping an analytic shape.
 inline Object shapeObject(std::string name, std::unique_ptr<Shape> shape, uint32_t material = 0) {

@@ -6,36 +6,41 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "geometry/vec.h"
+#include "geometry/random.h"
 
 namespace raylab::test {
 
-/// SplitMix64: tiny, deterministic, good enough for test directions.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : m_state(seed) {}
+/// Deterministic test directions and points (geometry/random.h).
+using Rng = SplitMix64;
 
-    uint64_t next() {
-        uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
+/// Sets flush-to-zero and denormals-are-zero (what Embree asks of render
+/// threads) on the calling thread for the object's lifetime, when the platform
+/// has them; restores MXCSR afterwards.
+class FlushDenormals {
+public:
+    explicit FlushDenormals(bool on) {
+#if defined(__SSE2__)
+        m_saved = _mm_getcsr();
+        if (on) _mm_setcsr(m_saved | 0x8040u);  // FTZ (bit 15) | DAZ (bit 6)
+#else
+        (void)on;
+#endif
     }
-    /// Uniform in [0, 1).
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    /// Uniform in [lo, hi).
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    /// Uniform direction on the unit sphere.
-    Vec3 direction() {
-        const double z = uniform(-1, 1);
-        const double phi = uniform(0, 2 * 3.14159265358979323846);
-        const double s = std::sqrt(std::max(0.0, 1 - z * z));
-        return {s * std::cos(phi), s * std::sin(phi), z};
+    ~FlushDenormals() {
+#if defined(__SSE2__)
+        _mm_setcsr(m_saved);
+#endif
     }
+    FlushDenormals(const FlushDenormals&) = delete;
+    FlushDenormals& operator=(const FlushDenormals&) = delete;
 
 private:
-    uint64_t m_state;
+    unsigned m_saved = 0;
 };
 
 /// Distance in units in the last place between two doubles of the same sign.

@@ -12,38 +12,11 @@
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
 
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#endif
-
 using namespace raylab;
+using raylab::test::FlushDenormals;
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// Sets flush-to-zero and denormals-are-zero (what Embree asks of render threads) for
-/// the lifetime of the object, when the platform has them; restores MXCSR afterwards.
-class FlushDenormals {
-public:
-    explicit FlushDenormals(bool on) {
-#if defined(__SSE2__)
-        m_saved = _mm_getcsr();
-        if (on) _mm_setcsr(m_saved | 0x8040u);  // FTZ (bit 15) | DAZ (bit 6)
-#else
-        (void)on;
-#endif
-    }
-    ~FlushDenormals() {
-#if defined(__SSE2__)
-        _mm_setcsr(m_saved);
-#endif
-    }
-    FlushDenormals(const FlushDenormals&) = delete;
-    FlushDenormals& operator=(const FlushDenormals&) = delete;
-
-private:
-    unsigned m_saved = 0;
-};
 
 std::unique_ptr<Shape> cone(Vec3 base, double r0, Vec3 apex, double r1, bool capped = false) {
     ConeParams p;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/random.h"
 #include "geometry/triangle.h"
 
 using namespace raylab;
@@ -19,22 +20,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// SplitMix64 in [0, 1): the same sequence on every platform.
-class TriRng {
-public:
-    explicit TriRng(uint64_t seed) : m_state(seed) {}
-    double uniform() {
-        uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    Vec3 point(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
-
-private:
-    uint64_t m_state;
-};
+using TriRng = SplitMix64;
 
 using Intersector = std::optional<TriangleHit> (*)(const Ray&, const Vec3&, const Vec3&,
                                                    const Vec3&, double, double);

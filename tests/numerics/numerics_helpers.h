@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "accel/accel_test_helpers.h"
+#include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
@@ -28,6 +29,9 @@ using accel_test::kInf;
 using accel_test::kPi;
 using accel_test::meshObject;
 using accel_test::Rng;
+using test::FlushDenormals;
+using test::perpendicular;
+using test::ulpDistance;
 using accel_test::shapeObject;
 
 /// One accelerator configuration the hard cases run through.
@@ -50,19 +54,6 @@ inline std::unique_ptr<Accelerator> build(const Backend& b, const Scene& scene,
     o.robust = b.robust;
     o.origin = origin;
     return makeAccelerator(b.name, scene, o);
-}
-
-/// Distance in units in the last place between two doubles.
-inline double ulpDistance(double a, double b) {
-    if (a == b) return 0;
-    const double ulp = std::nextafter(std::abs(b), HUGE_VAL) - std::abs(b);
-    return std::abs(a - b) / ulp;
-}
-
-/// Any unit vector perpendicular to the unit vector n.
-inline Vec3 perpendicular(const Vec3& n) {
-    const Vec3 a = std::abs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    return normalize(cross(n, a));
 }
 
 /// \brief Ray-sphere roots in long double (64-bit significand), for rays

@@ -9,10 +9,6 @@
 
 #include <doctest/doctest.h>
 
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#endif
-
 #include <cmath>
 
 #include "numerics/numerics_helpers.h"
@@ -21,30 +17,6 @@ using namespace raylab;
 using namespace raylab::numerics_test;
 
 namespace {
-
-/// Sets FTZ and DAZ on the calling thread for its lifetime (queries run on
-/// the calling thread; the Embree builds happen before).
-class FlushDenormals {
-public:
-    explicit FlushDenormals(bool on) {
-#if defined(__SSE2__)
-        m_saved = _mm_getcsr();
-        if (on) _mm_setcsr(m_saved | 0x8040u);  // FTZ (bit 15) | DAZ (bit 6)
-#else
-        (void)on;
-#endif
-    }
-    ~FlushDenormals() {
-#if defined(__SSE2__)
-        _mm_setcsr(m_saved);
-#endif
-    }
-    FlushDenormals(const FlushDenormals&) = delete;
-    FlushDenormals& operator=(const FlushDenormals&) = delete;
-
-private:
-    unsigned m_saved = 0;
-};
 
 Scene single(std::unique_ptr<Shape> shape, Precision precision) {
     shape->setSidedness(Sidedness::Both);
