@@ -23,6 +23,18 @@ struct AccelOptions {
     Vec3 origin{0, 0, 0};
 };
 
+/// "low", "medium" or "high": the spelling of --bvh-quality and the JSON key.
+inline const char* bvhQualityName(AccelOptions::BvhQuality q) {
+    switch (q) {
+        case AccelOptions::BvhQuality::Low:
+            return "low";
+        case AccelOptions::BvhQuality::High:
+            return "high";
+        default:
+            return "medium";
+    }
+}
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;

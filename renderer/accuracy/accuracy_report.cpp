@@ -44,17 +44,6 @@ double mrays(const AccuracyResult& r) {
 
 const char* precisionName(Precision p) { return p == Precision::Float ? "float" : "double"; }
 
-const char* qualityName(AccelOptions::BvhQuality q) {
-    switch (q) {
-        case AccelOptions::BvhQuality::Low:
-            return "low";
-        case AccelOptions::BvhQuality::High:
-            return "high";
-        default:
-            return "medium";
-    }
-}
-
 std::string jsonBool(bool b) { return b ? "true" : "false"; }
 
 /// The JSON members of one result (without braces).
@@ -76,7 +65,7 @@ std::string resultJson(const AccuracyResult& r, const std::string& indent) {
     add("precision", jsonString(precisionName(s.precision)));
     add("offset", jsonString(s.offset == OffsetMode::Robust ? "robust" : "epsilon"));
     add("epsilon", s.offset == OffsetMode::Robust ? "null" : jsonNumber(s.epsilon));
-    add("bvh_quality", jsonString(qualityName(s.quality)));
+    add("bvh_quality", jsonString(bvhQualityName(s.quality)));
     add("robust", jsonBool(s.robust));
     add("build_ms", jsonNumber(r.buildSeconds * 1e3));
     add("render_ms", jsonNumber(r.renderSeconds * 1e3));
@@ -189,7 +178,7 @@ std::string accuracyCsv(const AccuracyReport& rep) {
             precisionName(s.precision),
             s.offset == OffsetMode::Robust ? "robust" : "epsilon",
             s.offset == OffsetMode::Robust ? "" : jsonNumber(s.epsilon),
-            qualityName(s.quality),
+            bvhQualityName(s.quality),
             s.robust ? "1" : "0",
             jsonNumber(r.buildSeconds * 1e3),
             jsonNumber(r.renderSeconds * 1e3),

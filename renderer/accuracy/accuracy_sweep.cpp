@@ -23,17 +23,6 @@ namespace raylab {
 
 namespace {
 
-const char* qualityName(AccelOptions::BvhQuality q) {
-    switch (q) {
-        case AccelOptions::BvhQuality::Low:
-            return "low";
-        case AccelOptions::BvhQuality::High:
-            return "high";
-        default:
-            return "medium";
-    }
-}
-
 /// Shortest "%g" text that reads back as the same double (flags, labels).
 std::string shortNumber(double v) {
     char buf[40];
@@ -88,7 +77,7 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     ov.minWeight = s.minWeight;
     ov.seed = 0;
     ov.accel = std::string("embree");
-    ov.bvhQuality = std::string(qualityName(s.quality));
+    ov.bvhQuality = std::string(bvhQualityName(s.quality));
     ov.robust = s.robust;
     ov.precision = std::string(s.precision == Precision::Float ? "float" : "double");
     if (s.offset == OffsetMode::FixedEpsilon) ov.epsilon = s.epsilon;
@@ -137,7 +126,7 @@ std::string AccuracySetting::flags() const {
     if (minWeight > 0) f += " --min-weight " + shortNumber(minWeight);
     f += std::string(" --precision ") + (precision == Precision::Float ? "float" : "double");
     if (offset == OffsetMode::FixedEpsilon) f += " --epsilon " + shortNumber(epsilon);
-    f += std::string(" --bvh-quality ") + qualityName(quality);
+    f += std::string(" --bvh-quality ") + bvhQualityName(quality);
     if (robust) f += " --robust";
     return f;
 }

@@ -61,10 +61,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 /// One back end's measurement on one scene.
 struct Timing {
     double buildSeconds = 0;   ///< median

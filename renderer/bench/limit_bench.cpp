@@ -49,10 +49,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 /// Replays the rays through the Accelerator interface (what the integrator
 /// calls: conversion, query, decoding), with the same threading as
 /// EmbreeReplay; counts answers that differ from the recorded ones.
