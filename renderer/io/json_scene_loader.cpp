@@ -212,6 +212,10 @@ private:
     MeshTransform readTransform(const JsonValue& v, const std::string& path);
     MeshTransform readRotation(const JsonValue& v, const std::string& path);
 
+    /// The object's "sides" key, or `fallback` without one.
+    Sidedness sides(const Fields& f, Sidedness fallback);
+    /// "sides" (default both) on every mesh object added since `firstObject`.
+    void setMeshSides(const Fields& f, size_t firstObject);
     void addShape(const Fields& f, std::unique_ptr<Shape> shape, uint32_t material,
                   const std::string& name);
     void addMesh(std::shared_ptr<TriangleMesh> mesh, uint32_t material,
@@ -490,19 +494,21 @@ void SceneReader::readObject(const JsonValue& v, const std::string& path) {
     std::string name = path;
     if (const JsonValue* n = v.find("name")) name = string(*n, memberPath(path, "name"));
 
-    if (type == "mesh" || type == "checkerboard")
-        if (const JsonValue* sides = v.find("sides"))
-            fail(*sides, memberPath(path, "sides"),
-                 "not supported for triangle meshes (they are hit from both sides)");
     if (type == "mesh") {
-        const Fields f(*this, v, path, "a mesh", {"type", "name", "file", "transform", "material"});
+        const Fields f(*this, v, path, "a mesh",
+                       {"type", "name", "file", "transform", "material", "sides"});
+        const size_t first = m_scene.objects.size();
         readMeshFile(f, v.find("name") ? name : "");
+        setMeshSides(f, first);
         return;
     }
     if (type == "checkerboard") {
         const Fields f(*this, v, path, "a checkerboard",
-                       {"type", "name", "origin", "edge_u", "edge_v", "divisions", "materials"});
+                       {"type", "name", "origin", "edge_u", "edge_v", "divisions", "materials",
+                        "sides"});
+        const size_t first = m_scene.objects.size();
         readCheckerboard(f, name);
+        setMeshSides(f, first);
         return;
     }
 
@@ -536,17 +542,26 @@ void SceneReader::readObject(const JsonValue& v, const std::string& path) {
     if (type == "polygon") readPolygon(f, material, name);
 }
 
+Sidedness SceneReader::sides(const Fields& f, Sidedness fallback) {
+    const JsonValue* s = f.get("sides");
+    if (!s) return fallback;
+    return choice<Sidedness>(
+        *s, f.path("sides"),
+        {{"outside", Sidedness::Outside}, {"inside", Sidedness::Inside}, {"both", Sidedness::Both}});
+}
+
+void SceneReader::setMeshSides(const Fields& f, size_t firstObject) {
+    // Meshes default to both sides: OBJ files from other tools often mix
+    // windings, and a one-sided mesh with a flipped face shows a hole.
+    const Sidedness s = sides(f, Sidedness::Both);
+    for (size_t i = firstObject; i < m_scene.objects.size(); ++i) m_scene.objects[i].meshSides = s;
+}
+
 void SceneReader::addShape(const Fields& f, std::unique_ptr<Shape> shape, uint32_t material,
                            const std::string& name) {
     // Transmitters must be hit from inside too, or refracted rays never leave.
-    Sidedness sides =
-        m_scene.materials[material].transmissive() ? Sidedness::Both : Sidedness::Outside;
-    if (const JsonValue* s = f.get("sides"))
-        sides = choice<Sidedness>(*s, f.path("sides"),
-                                  {{"outside", Sidedness::Outside},
-                                   {"inside", Sidedness::Inside},
-                                   {"both", Sidedness::Both}});
-    shape->setSidedness(sides);
+    shape->setSidedness(sides(
+        f, m_scene.materials[material].transmissive() ? Sidedness::Both : Sidedness::Outside));
     Object obj;
     obj.name = name;
     obj.shape = std::move(shape);
@@ -680,16 +695,15 @@ void SceneReader::readPolygon(const Fields& f, uint32_t material, const std::str
         for (const char* key : {"rule", "test"})
             if (const JsonValue* x = f.get(key))
                 fail(*x, f.path(key), "has no effect with \"triangulate\": true");
-        if (const JsonValue* x = f.get("sides"))
-            fail(*x, f.path("sides"),
-                 "has no effect with \"triangulate\": true (triangles are hit from both sides)");
         auto mesh = std::make_shared<TriangleMesh>();
         mesh->positions = p.vertices;
         mesh->normals = p.normals;
         mesh->triangles = build(f, [&] { return triangulatePolygon(p.vertices); });
         if (mesh->triangles.empty())
             fail(f.value(), f.objectPath(), "polygon: triangulation gave no triangles");
+        const size_t first = m_scene.objects.size();
         addMesh(mesh, material, {}, name);
+        setMeshSides(f, first);
         return;
     }
     if (const JsonValue* x = f.get("rule"))

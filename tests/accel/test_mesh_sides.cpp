@@ -1,5 +1,7 @@
-// One-sided triangle meshes (NFF's opaque triangles): the back of a triangle
-// is invisible to both accelerators, for closest hits and shadow rays alike.
+// One-sided triangle meshes (NFF's opaque triangles, JSON meshes with
+// "sides"): the back of a triangle is invisible to both accelerators, for
+// closest hits and shadow rays alike, and a triangulated polygon keeps the
+// facing of the analytic one.
 #include <doctest/doctest.h>
 
 #include <limits>
@@ -7,6 +9,7 @@
 #include <string>
 
 #include "renderer/accel/accelerator.h"
+#include "renderer/io/scene_loader.h"
 
 using namespace raylab;
 
@@ -52,5 +55,51 @@ TEST_CASE("one-sided meshes: back faces are culled by Embree and the naive loop"
             CHECK(accel->occluded(fromFront, 0, inf) == e.front);
             CHECK(accel->occluded(fromBack, 0, inf) == e.back);
         }
+    }
+}
+
+TEST_CASE("json \"sides\": a triangulated polygon faces the way the analytic one does") {
+    // A concave L-shape in z = 0, counter-clockwise seen from +z: its outward
+    // (Newell) normal is +z, and the ear-clipped triangles must keep that winding.
+    const std::string lShape = "[[0,0,0], [2,0,0], [2,1,0], [1,1,0], [1,2,0], [0,2,0]]";
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const std::string sides : {"outside", "inside", "both"}) {
+        const std::string text = R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
+            "objects": [
+              {"type": "polygon", "vertices": )" + lShape + R"(, "sides": ")" + sides + R"("},
+              {"type": "polygon", "vertices": )" + lShape + R"(, "sides": ")" + sides +
+                                 R"(", "triangulate": true}]})";
+        Scene scene = loadJsonScene(text, "sides.json");
+        REQUIRE(scene.objects.size() == 2);
+        REQUIRE(bool(scene.objects[1].mesh));
+        // Each polygon alone in a scene, so every hit is its own.
+        Scene analytic, triangles;
+        analytic.materials = triangles.materials = scene.materials;
+        analytic.objects.push_back(std::move(scene.objects[0]));
+        triangles.objects.push_back(std::move(scene.objects[1]));
+        const bool front = sides != "inside", back = sides != "outside";
+        // Points inside the L (including the concave corner's neighbourhood).
+        for (const Vec3 at : {Vec3{0.5, 0.5, 0}, Vec3{1.5, 0.5, 0}, Vec3{0.5, 1.5, 0},
+                              Vec3{0.9, 0.9, 0}}) {
+            const Ray fromFront{at + Vec3{0.1, 0.2, 4}, normalize(Vec3{-0.1, -0.2, -4})};
+            const Ray fromBack{at + Vec3{0.2, -0.1, -4}, normalize(Vec3{-0.2, 0.1, 4})};
+            for (const std::string name : {"embree", "naive"}) {
+                CAPTURE(sides);
+                CAPTURE(name);
+                CAPTURE(at.x);
+                CAPTURE(at.y);
+                for (const Scene* s : {&analytic, &triangles}) {
+                    const auto accel = makeAccelerator(name, *s);
+                    CHECK(accel->intersect(fromFront, 0, inf).has_value() == front);
+                    CHECK(accel->intersect(fromBack, 0, inf).has_value() == back);
+                    CHECK(accel->occluded(fromFront, 0, inf) == front);
+                    CHECK(accel->occluded(fromBack, 0, inf) == back);
+                }
+            }
+        }
+        // Outside the L (the notch) neither is hit from anywhere.
+        const Ray notch{{1.5, 1.5, 4}, {0, 0, -1}};
+        for (const Scene* s : {&analytic, &triangles})
+            CHECK_FALSE(makeAccelerator("naive", *s)->intersect(notch, 0, inf).has_value());
     }
 }

@@ -307,6 +307,30 @@ TEST_CASE("json scene: sidedness defaults and materials by name or inline") {
     CHECK(hitT(*s.objects[2].shape, {0, 0, 5}, {0, 0, -1}) == doctest::Approx(6));
 }
 
+TEST_CASE("json scene: meshes are two-sided unless \"sides\" says otherwise") {
+    IoTempDir dir;
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string board =
+        R"("origin": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [0, 1, 0], "materials": [{}, {}])";
+    const std::string quad = R"("vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])";
+    const std::string path = dir.write(
+        "s.json", sceneWith(R"({"type": "mesh", "file": "tri.obj"},
+        {"type": "mesh", "file": "tri.obj", "sides": "outside"},
+        {"type": "checkerboard", )" + board + R"(},
+        {"type": "checkerboard", )" + board + R"(, "sides": "inside"},
+        {"type": "polygon", )" + quad + R"(, "triangulate": true},
+        {"type": "polygon", )" + quad + R"(, "triangulate": true, "sides": "outside"})"));
+    const Scene s = loadScene(path);
+    REQUIRE(s.objects.size() == 6);
+    const Sidedness expected[6] = {Sidedness::Both, Sidedness::Outside, Sidedness::Both,
+                                   Sidedness::Inside, Sidedness::Both, Sidedness::Outside};
+    for (size_t i = 0; i < 6; ++i) {
+        CAPTURE(i);
+        REQUIRE(bool(s.objects[i].mesh));
+        CHECK(s.objects[i].meshSides == expected[i]);
+    }
+}
+
 TEST_CASE("json scene: OBJ mesh with transforms, relative to the scene file") {
     IoTempDir dir;
     dir.write("meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
@@ -416,8 +440,11 @@ TEST_CASE("json scene: errors name file, line and key path") {
         loadFailure(sceneWith("{\"type\": \"polygon\", \"vertices\": [[0,0,0],[1,0,0],[0,1,0]], "
                               "\"triangulate\": true, \"rule\": \"nonzero\"}"));
     CHECK(contains(f.message, "objects[0].rule: has no effect with \"triangulate\": true"));
-    f = loadFailure(sceneWith("{\"type\": \"checkerboard\", \"sides\": \"both\"}"));
-    CHECK(contains(f.message, "objects[0].sides: not supported for triangle meshes"));
+    f = loadFailure(sceneWith(
+        "{\"type\": \"checkerboard\", \"origin\": [0,0,0], \"edge_u\": [1,0,0], "
+        "\"edge_v\": [0,1,0], \"materials\": [{}, {}], \"sides\": \"front\"}"));
+    CHECK(contains(f.message,
+                   "objects[0].sides: must be one of 'outside', 'inside', 'both' (got 'front')"));
 
     // Material references.
     f = loadFailure(sceneWith(
