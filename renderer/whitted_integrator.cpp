@@ -76,7 +76,9 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             result += lambert(m.kd, light.intensity, n, l);
             if constexpr ((E & kHighlights) != 0) {
                 if (!m_prune || !m.ks.isBlack())
-                    result += blinnPhong(m.ks, m.shininess, light.intensity, n, l, toViewer);
+                    result += m.highlight == Highlight::Phong
+                                  ? phong(m.ks, m.shininess, light.intensity, n, l, toViewer)
+                                  : blinnPhong(m.ks, m.shininess, light.intensity, n, l, toViewer);
             }
         }
         return result;

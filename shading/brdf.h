@@ -40,4 +40,15 @@ inline Color blinnPhong(const Color& ks, double shininess, const Color& lightInt
     return ks * lightIntensity * specularPower(nh, shininess);
 }
 
+/// Phong: ks · I · max(0, R·V)^s with R = 2(N·L)N − L, the mirror direction of
+/// L. The model of Haines' SPD (NFF's "Shine" is a Phong cosine power); for the
+/// same exponent its highlight is wider than Blinn-Phong's (R·V ≤ N·H).
+inline Color phong(const Color& ks, double shininess, const Color& lightIntensity, const Vec3& n,
+                   const Vec3& l, const Vec3& v) {
+    const Vec3 r = n * (2 * dot(n, l)) - l;
+    const double rv = dot(r, v);
+    if (!(rv > 0)) return Color{};
+    return ks * lightIntensity * specularPower(rv, shininess);
+}
+
 }  // namespace raylab

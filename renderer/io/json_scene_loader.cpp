@@ -417,12 +417,16 @@ void SceneReader::readMaterials(const JsonValue& v, const std::string& path) {
 
 Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) {
     const Fields f(*this, v, path, "a material",
-                   {"ka", "kd", "ks", "shininess", "km", "kt", "ior"});
+                   {"ka", "kd", "ks", "shininess", "highlight", "km", "kt", "ior"});
     Material m;
     if (const JsonValue* x = f.get("ka")) m.ka = color(*x, f.path("ka"));
     if (const JsonValue* x = f.get("kd")) m.kd = color(*x, f.path("kd"));
     if (const JsonValue* x = f.get("ks")) m.ks = color(*x, f.path("ks"));
     if (const JsonValue* x = f.get("shininess")) m.shininess = nonNegative(*x, f.path("shininess"));
+    if (const JsonValue* x = f.get("highlight"))
+        m.highlight = choice<Highlight>(
+            *x, f.path("highlight"),
+            {{"blinn-phong", Highlight::BlinnPhong}, {"phong", Highlight::Phong}});
     if (const JsonValue* x = f.get("km")) m.km = color(*x, f.path("km"));
     if (const JsonValue* x = f.get("kt")) m.kt = color(*x, f.path("kt"));
     if (const JsonValue* x = f.get("ior")) m.ior = positive(*x, f.path("ior"));

@@ -8,7 +8,8 @@
 //                                  of view between the outermost sample rows),
 //                                  cameraNear, image size (flags override it).
 //   f R G B Kd Ks Shine T ior  ->  kd = ka = colour·Kd, ks = Ks (white),
-//                                  shininess = Shine, km = Ks (a reflective
+//                                  shininess = Shine with Phong highlights
+//                                  (SPD's model), km = Ks (a reflective
 //                                  surface spawns mirror rays), kt = T, ior
 //                                  (only read when T > 0: SPD writes ior 0 for
 //                                  opaque surfaces).
@@ -378,6 +379,7 @@ private:
         m.ka = c * kd;
         m.ks = Color(ks);
         m.shininess = shine;
+        m.highlight = Highlight::Phong;  // NFF's Shine is a Phong cosine power
         m.km = Color(ks);
         m.kt = Color(t);
         m.ior = t > 0 ? ior : 1.0;

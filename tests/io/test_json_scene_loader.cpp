@@ -82,7 +82,8 @@ TEST_CASE("json scene: image, background, ambient, lights and materials") {
         ],
         "materials": {
             "red": {"kd": [0.8, 0.1, 0.1], "ks": 0.5, "shininess": 64, "ka": [0.1, 0, 0]},
-            "glass": {"kd": 0, "kt": 0.9, "km": [0.1, 0.1, 0.1], "ior": 1.5}
+            "glass": {"kd": 0, "kt": 0.9, "km": [0.1, 0.1, 0.1], "ior": 1.5,
+                      "highlight": "phong"}
         },
         "objects": []
     })");
@@ -108,6 +109,8 @@ TEST_CASE("json scene: image, background, ambient, lights and materials") {
     CHECK(red.ks == Color(0.5, 0.5, 0.5));
     CHECK(red.ka == Color(0.1, 0, 0));
     CHECK(red.shininess == 64);
+    CHECK(red.highlight == Highlight::BlinnPhong);  // the default
+    CHECK(s.materials[1].highlight == Highlight::Phong);
     CHECK(red.km.isBlack());
     CHECK(red.kt.isBlack());
     CHECK(red.ior == 1.0);

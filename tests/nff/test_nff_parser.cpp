@@ -112,6 +112,7 @@ TEST_CASE("nff: f maps colour, Kd, Ks, Shine, T and ior onto the Whitted materia
     CHECK(m.ks.r == 0.3);                   // white highlight
     CHECK(m.ks.b == 0.3);
     CHECK(m.shininess == 20);
+    CHECK(m.highlight == Highlight::Phong);  // SPD: Shine is a Phong cosine power
     CHECK(m.km.g == 0.3);  // mirror reflection weight Ks
     CHECK(m.kt.isBlack());
     CHECK(m.ior == 1.0);   // ignored ior 0 of an opaque surface

@@ -29,6 +29,22 @@ TEST_CASE("blinn-phong: ks * I * max(0, N.H)^s") {
     CHECK(c.r == doctest::Approx(0.5));
 }
 
+TEST_CASE("phong: ks * I * max(0, R.V)^s, R the mirror direction of L") {
+    const Vec3 n{0, 0, 1};
+    // Mirror configuration: R = V, so the term is ks * I, as for Blinn-Phong.
+    const Vec3 l = normalize(Vec3{1, 0, 1}), v = normalize(Vec3{-1, 0, 1});
+    CHECK(phong(Color(0.5), 100, Color(1), n, l, v).r == doctest::Approx(0.5));
+    // L at 30° from N in the xz plane: R at -30°, i.e. (-1/2, 0, sqrt(3)/2).
+    // V = N: R.V = cos 30° = sqrt(3)/2, squared 3/4; times ks = 0.4 and I = 2: 0.6.
+    const Vec3 l30{0.5, 0, std::sqrt(3.0) / 2};
+    CHECK(phong(Color(0.4), 2, Color(2), n, l30, n).r == doctest::Approx(0.6));
+    // Blinn-Phong of the same configuration: H at 15°, cos² 15° = (1 + cos 30°)/2.
+    CHECK(blinnPhong(Color(0.4), 2, Color(2), n, l30, n).r ==
+          doctest::Approx(0.8 * (1 + std::sqrt(3.0) / 2) / 2));
+    // V beyond 90° from R: nothing (no negative power).
+    CHECK(phong(Color(1), 3, Color(1), n, l30, normalize(Vec3{1, 0, 0.01})).isBlack());
+}
+
 TEST_CASE("reflect: mirror direction about the normal") {
     const Vec3 r = reflect(normalize(Vec3{1, -1, 0}), {0, 1, 0});
     CHECK(r.x == doctest::Approx(std::sqrt(0.5)));
