@@ -12,14 +12,14 @@ namespace {
 constexpr double kOffsetUlps = 32.0;
 }  // namespace
 
-double robustOffset(const Vec3& p, const SpawnSettings& s) {
-    const double magnitude = std::max(1.0, maxComponent(abs(p - s.reference)));
+double robustOffset(const Vec3& p, double span, const SpawnSettings& s) {
+    const double magnitude = std::max(s.minMagnitude, maxComponent(abs(p - s.reference)) + span);
     return kOffsetUlps * FLT_EPSILON * magnitude;
 }
 
-RaySpawner::RaySpawner(const Vec3& p, const Vec3& ng, const SpawnSettings& s)
+RaySpawner::RaySpawner(const Vec3& p, const Vec3& ng, double span, const SpawnSettings& s)
     : m_p(p), m_ng(ng), m_settings(s) {
-    if (s.mode == OffsetMode::Robust) m_offset = ng * robustOffset(p, s);
+    if (s.mode == OffsetMode::Robust) m_offset = ng * robustOffset(p, span, s);
 }
 
 SpawnedRay RaySpawner::operator()(const Vec3& dir) const {
@@ -28,8 +28,9 @@ SpawnedRay RaySpawner::operator()(const Vec3& dir) const {
     return {Ray{dot(dir, m_ng) >= 0 ? m_p + m_offset : m_p - m_offset, dir}, 0.0};
 }
 
-SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, const Vec3& dir, const SpawnSettings& s) {
-    return RaySpawner(p, ng, s)(dir);
+SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, double span, const Vec3& dir,
+                    const SpawnSettings& s) {
+    return RaySpawner(p, ng, span, s)(dir);
 }
 
 }  // namespace raylab

@@ -3,11 +3,16 @@
 // that fights self-intersection ("acne"); call sites never invent epsilons.
 //
 // Robust (default): move the origin off the surface along the geometric
-// normal, towards the side the new ray leaves into, by a distance scaled to
-// the float resolution of the hit point (Embree stores geometry in float,
-// relative to `reference`, normally the eye), and start at t = 0. This is the
-// Embree-tutorial strategy (NUMERICS.md §3.2 (b)): 0% false self-shadowing at
-// any scene scale, measured offsets ~1e-5 of |p|.
+// normal, towards the side the new ray leaves into, by 32 float ulps of the
+// largest coordinate of the primitive that was hit, and start at t = 0.
+// Embree stores triangles in float relative to `reference` (normally the
+// eye), so a triangle's float copy is off by ulps of its vertices, bounded by
+// |p - reference| + span (span: the triangle's extent around p); analytic
+// shapes intersect in double (span 0) or, in float precision, relative to
+// themselves (span: the shape's size). No absolute floor: a scene scaled by
+// 1e-6 or 1e4 renders the same image (tests/render/test_scale_invariance).
+// This is the Embree-tutorial strategy (NUMERICS.md §3.2 (b)): 0% false
+// self-shadowing at any scene scale and position.
 // FixedEpsilon: the lecture's t > epsilon with the origin left on the surface.
 
 #include "geometry/ray.h"
@@ -21,6 +26,9 @@ struct SpawnSettings {
     OffsetMode mode = OffsetMode::Robust;
     double epsilon = 1e-4;  ///< FixedEpsilon only: the lecture's t > epsilon
     Vec3 reference{0, 0, 0};  ///< point the float geometry is relative to (the eye)
+    /// Smallest magnitude the offset is scaled to, for hits at the reference
+    /// itself; the renderer sets 1e-9 of the scene's size (scale-free).
+    double minMagnitude = 0;
 };
 
 struct SpawnedRay {
@@ -32,7 +40,9 @@ struct SpawnedRay {
 /// once per hit, not once per ray (a hit spawns a shadow ray per light).
 class RaySpawner {
 public:
-    RaySpawner(const Vec3& p, const Vec3& ng, const SpawnSettings& s);
+    /// span: extent of the hit primitive's float-rounded geometry around p
+    /// (see the file comment; SurfaceInteraction::span).
+    RaySpawner(const Vec3& p, const Vec3& ng, double span, const SpawnSettings& s);
     /// A ray leaving the surface in direction dir, on the side dir points to.
     SpawnedRay operator()(const Vec3& dir) const;
 
@@ -43,9 +53,10 @@ private:
 
 /// A ray leaving the surface point p (unit geometric normal ng, either side)
 /// in direction dir.
-SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, const Vec3& dir, const SpawnSettings& s);
+SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, double span, const Vec3& dir,
+                    const SpawnSettings& s);
 
 /// The robust offset distance at p (exposed for tests and the accuracy study).
-double robustOffset(const Vec3& p, const SpawnSettings& s);
+double robustOffset(const Vec3& p, double span, const SpawnSettings& s);
 
 }  // namespace raylab

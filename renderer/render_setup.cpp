@@ -53,6 +53,10 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
     // rendering), and secondary-ray offsets are scaled in the same frame.
     r.accelOptions.origin = scene.camera.frame().eye;
     r.spawn.reference = scene.camera.frame().eye;
+    // A hit at the eye itself still gets an offset, scaled to the scene
+    // (never an absolute length, which would break tiny scenes).
+    const Bounds3 b = scene.bounds();
+    if (!b.empty() && b.finite()) r.spawn.minMagnitude = 1e-9 * maxComponent(b.extent());
     return r;
 }
 

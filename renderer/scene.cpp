@@ -65,6 +65,8 @@ SurfaceInteraction meshSurface(const Ray& ray, const TriangleMesh& mesh, uint32_
     // The point from the barycentrics lies on the triangle up to rounding,
     // unlike o + t·d whose error grows with t.
     si.p = p0 * (1 - u - v) + p1 * u + p2 * v;
+    si.span = std::max({maxComponent(abs(p0 - si.p)), maxComponent(abs(p1 - si.p)),
+                        maxComponent(abs(p2 - si.p))});
 
     si.ng = normalize(n);
     if (si.ng == Vec3{0, 0, 0}) si.ng = -normalize(ray.d);  // zero-area: face the ray
@@ -110,6 +112,8 @@ SurfaceInteraction Scene::surfaceAt(const Ray& ray, const Hit& hit) const {
         si.ng = g.ng;
         si.ns = g.ns;
         si.frontFace = g.frontFace;
+        if (object.shape->precision() == Precision::Float)
+            si.span = maxComponent(object.shape->bounds().extent());
     }
     si.object = hit.object;
     si.material = object.materialOf(hit.prim);

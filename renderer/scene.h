@@ -59,6 +59,11 @@ struct SurfaceInteraction {
     Vec3 ng;       ///< unit geometric normal, outward
     Vec3 ns;       ///< unit shading normal, outward
     bool frontFace = true;
+    /// Extent around p of the primitive's float-rounded geometry, which sizes
+    /// the secondary-ray offset (geometry/spawn.h): a triangle's largest
+    /// vertex distance from p, a float-precision shape's size, 0 for shapes
+    /// intersected in double.
+    double span = 0;
     uint32_t object = 0;
     uint32_t material = 0;
 };

@@ -110,7 +110,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
         first->objectId = float(si.object);
     }
 
-    const RaySpawner spawn(si.p, ng, m_options.spawn);  // one offset for all of this hit's rays
+    const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays
     Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters);
     if (depth >= m_options.maxDepth) return result;
 

@@ -46,10 +46,10 @@ bool RayRecorder::isCameraRay(const Ray& ray) const {
 
 long RayRecorder::findParent(const std::vector<PathEntry>& path, const Ray& ray, double tMin,
                              const SpawnSettings& spawn) {
-    // The integrator spawns every secondary ray with spawnRay(si.p, ng, dir);
+    // The integrator spawns every secondary ray with spawnRay(si.p, ng, si.span, dir);
     // recomputing it for each open hit finds the parent exactly (deepest first).
     for (size_t i = path.size(); i-- > 0;) {
-        const SpawnedRay s = spawnRay(path[i].p, path[i].ngSide, ray.d, spawn);
+        const SpawnedRay s = spawnRay(path[i].p, path[i].ngSide, path[i].span, ray.d, spawn);
         if (s.ray.o == ray.o && s.tMin == tMin) return long(i);
     }
     return -1;
@@ -61,6 +61,7 @@ void RayRecorder::pushHit(ThreadState& ts, const Ray& ray, const Hit& hit, int d
     const Material& m = m_scene.materials[si.material];
     PathEntry e;
     e.p = si.p;
+    e.span = si.span;
     const bool entering = si.frontFace;
     e.ngSide = entering ? si.ng : -si.ng;
     e.nSide = entering ? si.ns : -si.ns;

@@ -72,6 +72,7 @@ private:
     /// A hit that may still spawn rays: what the integrator knew when it spawned them.
     struct PathEntry {
         Vec3 p;          ///< hit point (SurfaceInteraction::p)
+        double span = 0; ///< SurfaceInteraction::span
         Vec3 ngSide;     ///< geometric normal on the side the ray arrived from
         Vec3 nSide;      ///< shading normal on that side
         Vec3 dirUnit;    ///< normalised direction of the ray that hit

@@ -160,12 +160,12 @@ TEST_CASE("sphere: spawned rays do not re-hit their own surface") {
             Vec3 dir = rng.direction();
             if (dot(dir, n) < 0) dir = -dir;
             // Leaving outward.
-            const SpawnedRay out = spawnRay(p, n, dir, spawn);
+            const SpawnedRay out = spawnRay(p, n, 0.0, dir, spawn);
             if (s->intersect(out.ray, out.tMin, kInf)) ++rehits;
             // Entering: the far side, about 2 r cos(theta) away (|d| = 1); exactly the far
             // root of the spawned ray (whose origin is offset inward by robustOffset()).
             const Vec3 in = -dir;
-            const SpawnedRay inRay = spawnRay(p, n, in, spawn);
+            const SpawnedRay inRay = spawnRay(p, n, 0.0, in, spawn);
             const auto hit = s->intersect(inRay.ray, inRay.tMin, kInf);
             const RefRoots ref = referenceRoots(inRay.ray.o, in, centre, r);
             if (!hit || !ref.hit || std::abs(hit->t - double(ref.t1)) > 1e-12 * r ||

@@ -188,7 +188,7 @@ TEST_CASE("acne: contact shadows at a 1e-4 thin wall, and a light 1e-4 behind it
                                 const bool nearLight = light.x == s.x - 1e-4;
                                 if (nearLight && !right)
                                     continue;  // that light sits on the floor side
-                                const SpawnedRay r = spawnRay(si.p, si.ng, light - si.p, spawn);
+                                const SpawnedRay r = spawnRay(si.p, si.ng, si.span, light - si.p, spawn);
                                 const bool occ = accel->occluded(r.ray, r.tMin, 1.0);
                                 if (right && !occ) ++(nearLight ? nearLeaks : leaks);
                                 if (!right && occ) ++falseShadows;
@@ -276,7 +276,7 @@ Rehits mirrorRehits(const Scene& scene, const Backend& b, const Vec3& c) {
         const SurfaceInteraction si = scene.surfaceAt(camera, *hit);
         const Vec3 ng = si.frontFace ? si.ng : -si.ng;
         const Vec3 d = normalize(camera.d);
-        const SpawnedRay m = spawnRay(si.p, ng, d - ng * (2 * dot(d, ng)), spawn);
+        const SpawnedRay m = spawnRay(si.p, ng, si.span, d - ng * (2 * dot(d, ng)), spawn);
         if (accel->intersect(m.ray, m.tMin, kInf)) ++r.rehits;
     }
     return r;

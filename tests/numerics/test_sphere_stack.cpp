@@ -298,9 +298,9 @@ SpawnCounts spawnFromSphere(const Backend& b, Precision precision, double scale)
         const Vec3 n = si.frontFace ? si.ng : -si.ng;  // towards the eye
         const Vec3 d = normalize(camera.d);
         const Vec3 out = d - n * (2 * dot(d, n));
-        const SpawnedRay reflected = spawnRay(si.p, n, out, spawn);
+        const SpawnedRay reflected = spawnRay(si.p, n, si.span, out, spawn);
         if (accel->intersect(reflected.ray, reflected.tMin, kInf)) ++c.rehits;
-        const SpawnedRay inward = spawnRay(si.p, n, d, spawn);
+        const SpawnedRay inward = spawnRay(si.p, n, si.span, d, spawn);
         const auto far = accel->intersect(inward.ray, inward.tMin, kInf);
         const double chord = 2 * r * -dot(d, n);
         if (!far || std::abs(far->t - chord) > 1e-3 * r + 1e-6) ++c.wrongFar;

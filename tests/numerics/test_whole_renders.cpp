@@ -2,7 +2,8 @@
 // in ../shared when present) renders without a single NaN/Inf sample under
 // default and stress settings; a scene translated by 1e5 renders like the
 // untranslated one thanks to camera-relative Embree data and spawn offsets
-// (and measurably worse without them); Embree's ISA changes triangle hits
+// (and measurably worse without them); a scene scaled by 1e-6 ... 1e4
+// renders like the unit-size one; Embree's ISA changes triangle hits
 // only within a documented tolerance (NUMERICS.md §4 (25)).
 
 #include <doctest/doctest.h>
@@ -82,20 +83,21 @@ TEST_CASE("whole renders: every shipped scene is free of NaN/Inf, default and st
 namespace {
 
 /// One of everything (every analytic kind, a mesh, a mirror, a glass ball,
-/// two point lights) around `s`, seen from 10 units away.
-Scene zoo(const Vec3& s) {
+/// two point lights) around `s`, seen from 10 units away, all lengths
+/// multiplied by `k` (lights do not fall off, so the image is scale-free).
+Scene zoo(const Vec3& s, double k = 1) {
+    const auto at = [&](double x, double y, double z) { return s + Vec3{x, y, z} * k; };
     Scene scene;
-    scene.camera =
-        Camera::perspective(s + Vec3{0.7, 3.1, 9.3}, s + Vec3{0.2, 0.8, 0}, {0, 1, 0}, 45);
+    scene.camera = Camera::perspective(at(0.7, 3.1, 9.3), at(0.2, 0.8, 0), {0, 1, 0}, 45);
     scene.image.width = 96;
     scene.image.height = 72;
     scene.background = Color(0.3, 0.4, 0.5);
     scene.ambient = Color(0.1);
     Light key;
-    key.position = s + Vec3{-4, 7, 6};
+    key.position = at(-4, 7, 6);
     key.intensity = Color(0.8);
     Light fill;
-    fill.position = s + Vec3{6, 4, 5};
+    fill.position = at(6, 4, 5);
     fill.intensity = Color(0.4);
     scene.lights = {key, fill};
     Material matte = material(Color(0.6, 0.55, 0.5), Color(0.6, 0.55, 0.5));
@@ -107,36 +109,36 @@ Scene zoo(const Vec3& s) {
         if (scene.materials[m].transmissive()) shape->setSidedness(Sidedness::Both);
         scene.objects.push_back(shapeObject(name, std::move(shape), m));
     };
-    add("floor", makePlane(s, {0, 1, 0}, 50), 0);
-    add("mirror ball", makeSphere(s + Vec3{-1.7, 1, -0.6}, 1), 1);
-    add("glass ball", makeSphere(s + Vec3{1.1, 0.75, 1.6}, 0.75), 2);
-    add("disk", makeDisk(s + Vec3{3, 1, -2}, normalize(Vec3{-0.4, 0.2, 1}), 0.9), 3);
+    add("floor", makePlane(s, {0, 1, 0}, 50 * k), 0);
+    add("mirror ball", makeSphere(at(-1.7, 1, -0.6), 1 * k), 1);
+    add("glass ball", makeSphere(at(1.1, 0.75, 1.6), 0.75 * k), 2);
+    add("disk", makeDisk(at(3, 1, -2), normalize(Vec3{-0.4, 0.2, 1}), 0.9 * k), 3);
     ConeParams cyl;
-    cyl.base = s + Vec3{-3.5, 0, 1};
-    cyl.apex = s + Vec3{-3.5, 1.6, 1};
-    cyl.baseRadius = cyl.apexRadius = 0.5;
+    cyl.base = at(-3.5, 0, 1);
+    cyl.apex = at(-3.5, 1.6, 1);
+    cyl.baseRadius = cyl.apexRadius = 0.5 * k;
     cyl.capped = true;
     add("cylinder", makeCone(cyl), 3);
     ConeParams cone = cyl;
-    cone.base = s + Vec3{2.8, 0, 0.8};
-    cone.apex = s + Vec3{2.8, 1.5, 0.8};
+    cone.base = at(2.8, 0, 0.8);
+    cone.apex = at(2.8, 1.5, 0.8);
     cone.apexRadius = 0;
     add("cone", makeCone(cone), 0);
     PolygonParams tri;
-    tri.vertices = {s + Vec3{-0.5, 0.01, -3}, s + Vec3{1.5, 0.01, -3}, s + Vec3{0.5, 2.5, -3.2}};
+    tri.vertices = {at(-0.5, 0.01, -3), at(1.5, 0.01, -3), at(0.5, 2.5, -3.2)};
     add("polygon", makePolygon(tri), 3);
-    QuadricParams ell;  // ellipsoid around s + (0.3, 0.5, 3), semi-axes 0.6, 0.4, 0.5
-    const Vec3 e = s + Vec3{0.3, 0.5, 3};
-    ell.A = 1 / 0.36;
-    ell.B = 1 / 0.16;
-    ell.C = 1 / 0.25;
+    QuadricParams ell;  // ellipsoid around (0.3, 0.5, 3), semi-axes 0.6, 0.4, 0.5 (times k)
+    const Vec3 e = at(0.3, 0.5, 3);
+    ell.A = 1 / (0.36 * k * k);
+    ell.B = 1 / (0.16 * k * k);
+    ell.C = 1 / (0.25 * k * k);
     ell.G = -2 * e.x * ell.A;
     ell.H = -2 * e.y * ell.B;
     ell.I = -2 * e.z * ell.C;
     ell.J = ell.A * e.x * e.x + ell.B * e.y * e.y + ell.C * e.z * e.z - 1;
     add("ellipsoid", makeQuadric(ell), 0);
-    auto torusish = accel_test::uvSphereMesh(s + Vec3{0.4, 1.4, -1.2}, 0.8, 12, 24, true);
-    scene.objects.push_back(meshObject("mesh ball", torusish, 0));
+    auto ball = accel_test::uvSphereMesh(at(0.4, 1.4, -1.2), 0.8 * k, 12, 24, true);
+    scene.objects.push_back(meshObject("mesh ball", ball, 0));
     return scene;
 }
 
@@ -178,6 +180,38 @@ TEST_CASE("whole renders: a scene translated by 1e5 renders like the untranslate
     CHECK(c.rmse < 1e-4);
     CHECK(visible <= 5);
     CHECK(cw.rmse >= c.rmse);
+}
+
+TEST_CASE("whole renders: a scene scaled by 1e-6 ... 1e4 renders like the unit-size one") {
+    // Nothing in the renderer may assume a unit of length: secondary-ray
+    // offsets scale with the hit primitive's float magnitude (no absolute
+    // floor). Scaling by a power of two scales every double and float
+    // operation exactly, so those images must be bit-identical; the decimal
+    // scales round differently and must match like the translated scene.
+    // Before the fix (offset floor of 1 unit) the 2^-20 scene lost every
+    // shadow and its mirror and glass showed the wrong things.
+    Scene unit = zoo({0, 0, 0});
+    const RenderResult a = renderWith(unit, {});
+    CHECK(a.nonFiniteSamples == 0);
+    for (double k : {0x1p-20, 0x1p-10, 0x1p10, 0x1p14}) {
+        CAPTURE(k);
+        Scene scaled = zoo({0, 0, 0}, k);
+        const RenderResult b = renderWith(scaled, {});
+        const ImageComparison c = compareImages(a.film, b.film, 2.0 / 255);
+        CHECK(c.maxAbsError == 0);
+        CHECK(a.rays.total(RayType::Shadow) == b.rays.total(RayType::Shadow));
+    }
+    for (double k : {1e-6, 1e-3, 1e4}) {
+        CAPTURE(k);
+        Scene scaled = zoo({0, 0, 0}, k);
+        const RenderResult b = renderWith(scaled, {});
+        const ImageComparison c = compareImages(a.film, b.film, 2.0 / 255);
+        const uint64_t visible = countVisibleDifferences(a.film, b.film, 2);
+        MESSAGE("scaled by " << k << ": RMSE " << c.rmse << ", max " << c.maxAbsError << ", "
+                             << visible << " visible pixels of " << c.pixelCount);
+        CHECK(c.rmse < 1e-4);
+        CHECK(visible <= 5);
+    }
 }
 
 TEST_CASE("whole renders: pinning Embree to SSE2 changes the image within a documented bound") {
