@@ -2,11 +2,30 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 
 #include "renderer/io/errors.h"
 
 namespace raylab {
+
+namespace {
+
+/// strtoll and strtod skip leading blanks; a value that starts with one is
+/// almost always a quoting mistake, so it is refused rather than guessed.
+bool startsWithSpace(const std::string& v) {
+    return !v.empty() && std::isspace(static_cast<unsigned char>(v[0]));
+}
+
+/// A range bound as a person writes it: 1e+30, 0.5, 64 (not 1000000000000000019884624838656.000000).
+std::string formatBound(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
+
+}  // namespace
 
 std::string ArgParser::next() { return m_args.at(m_pos++); }
 
@@ -24,7 +43,7 @@ long long ArgParser::integer(const std::string& flag, long long lo, long long hi
     errno = 0;
     char* end = nullptr;
     const long long x = std::strtoll(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || errno == ERANGE || x < lo || x > hi)
+    if (v.empty() || startsWithSpace(v) || *end != '\0' || errno == ERANGE || x < lo || x > hi)
         throw UsageError(flag + ": expected an integer in [" + std::to_string(lo) + ", " +
                          std::to_string(hi) + "] (got '" + v + "')");
     return x;
@@ -34,9 +53,9 @@ double ArgParser::number(const std::string& flag, double lo, double hi) {
     const std::string v = value(flag);
     char* end = nullptr;
     const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(x) || x < lo || x > hi)
-        throw UsageError(flag + ": expected a number in [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "] (got '" + v + "')");
+    if (v.empty() || startsWithSpace(v) || *end != '\0' || !std::isfinite(x) || x < lo || x > hi)
+        throw UsageError(flag + ": expected a number in [" + formatBound(lo) + ", " +
+                         formatBound(hi) + "] (got '" + v + "')");
     return x;
 }
 

@@ -2,8 +2,13 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <iterator>
+#include <system_error>
+#include <utility>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -37,8 +42,10 @@ const char* const kRenderHelp =
     "with RGBA plus Z, N (normal), albedo and objectId layers. Flags override the scene's settings.\n"
     "\n"
     "output:\n"
-    "  -o, --output FILE        OpenEXR output (required); written to a temporary name, then renamed\n"
-    "  --png FILE               also write a tone-mapped sRGB PNG preview\n"
+    "  -o, --output FILE.exr    OpenEXR output (required). Every output path is checked before the\n"
+    "                           render; the files are written to temporary names and renamed\n"
+    "                           together, so a failure leaves earlier files untouched\n"
+    "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects)\n"
@@ -86,6 +93,26 @@ struct RenderCli {
     RenderOverrides overrides;
 };
 
+/// Whether `path` ends in `ext` (".exr"), in any letter case.
+bool hasExtension(const std::string& path, const std::string& ext) {
+    if (path.size() <= ext.size()) return false;
+    for (size_t i = 0; i < ext.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i])
+            return false;
+    return true;
+}
+
+/// Whether two paths name one file (through "..", "." and symbolic links),
+/// whether or not it exists yet.
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ea, eb;
+    const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ea);
+    const std::filesystem::path cb = std::filesystem::weakly_canonical(b, eb);
+    if (ea || eb) return std::filesystem::absolute(a, ea).lexically_normal() ==
+                         std::filesystem::absolute(b, eb).lexically_normal();
+    return ca == cb;
+}
+
 RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     RenderCli cli;
     ArgParser p(args);
@@ -125,6 +152,21 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     }
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
     if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
+    // Two names for one file would make one output overwrite another, or the scene.
+    const std::pair<const char*, const std::string*> names[] = {
+        {"the scene", &cli.scene}, {"-o", &cli.exr}, {"--png", &cli.png}, {"--stats", &cli.stats}};
+    for (size_t i = 0; i < std::size(names); ++i)
+        for (size_t j = i + 1; j < std::size(names); ++j)
+            if (!names[i].second->empty() && !names[j].second->empty() &&
+                sameFile(*names[i].second, *names[j].second))
+                throw UsageError(std::string(names[j].first) + " names the same file as " +
+                                 names[i].first + " ('" + *names[j].second + "')");
+    // A PNG or anything else named .exr (or the reverse) is a typing mistake
+    // that would only show up when another program opens the file.
+    if (!hasExtension(cli.exr, ".exr"))
+        throw UsageError("-o writes OpenEXR: the name must end in .exr (got '" + cli.exr + "')");
+    if (!cli.png.empty() && !hasExtension(cli.png, ".png"))
+        throw UsageError("--png: the name must end in .png (got '" + cli.png + "')");
     return cli;
 }
 
@@ -185,6 +227,12 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
 
     const EffectSet effects = analyseEffects(scene, options);
     const FrameRange frames = cli.frames.value_or(FrameRange{});
+    // An output that cannot be written fails now, not after a long render.
+    if (mpi.isRoot()) {
+        for (const std::string& file : {cli.exr, cli.png, cli.stats})
+            if (!file.empty())
+                checkWritable(cli.frames ? sequenceFileName(file, frames.first) : file);
+    }
     for (int frame = frames.first; frame <= frames.last; ++frame) {
         // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
         const auto output = [&](const std::string& file) {
@@ -228,10 +276,14 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
         exr.scenePath = cli.scene;
         exr.accel = options.accel;
         exr.renderSeconds = result.renderSeconds;
-        writeExr(output(cli.exr), result.film, exr);
-        if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure);
+        // A frame's files appear together or not at all: a failed PNG or
+        // statistics write leaves an earlier render's EXR untouched too.
+        AtomicFileGroup files;
+        writeExr(output(cli.exr), result.film, exr, &files);
+        if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure, &files);
         stats.writeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson());
+        if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson(), &files);
+        files.commit();
 
         if (!cli.quiet) {
             printSummary(stats, output(cli.exr), output(cli.png));

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -64,52 +66,103 @@ std::string tempNameFor(const std::string& path) {
     throw InputError(path, 0, "cannot write file: " + reason);
 }
 
-}  // namespace
-
-void writeFileAtomically(const std::string& path,
-                         const std::function<void(const std::string& tmpPath)>& writer) {
+/// Creates the (empty) temporary for `path` and registers it; the caller owns both.
+AtomicFileGroup::Staged createTemp(const std::string& path) {
     if (path.empty()) throw InputError("cannot write file: empty output path");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path, 0, "cannot write file: it is a directory");
     const std::string tmp = tempNameFor(path);
     // Register before the file exists so there is no window in which an
     // interrupt leaves an unregistered temporary behind.
     const int slot = registerTemp(tmp);
-
     // Creating the file here (rather than leaving it to the writer) gives a
     // clear error naming the target when its directory is missing or read-only.
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) {
         const int err = errno;
         unregisterTemp(slot);
         throw InputError(path, 0, std::string("cannot write file: ") + std::strerror(err));
     }
     ::close(fd);
-
-    try {
-        writer(tmp);
-    } catch (const std::exception& e) {
-        fail(path, tmp, slot, e.what());
-    } catch (...) {
-        fail(path, tmp, slot, "unknown error");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        fail(path, tmp, slot, std::string("rename failed: ") + std::strerror(err));
-    }
-    unregisterTemp(slot);
+    return {path, tmp, slot};
 }
 
-void writeFileAtomically(const std::string& path, const std::string& contents) {
-    writeFileAtomically(path, [&](const std::string& tmp) {
-        std::FILE* f = std::fopen(tmp.c_str(), "wb");
-        if (!f) throw InputError(std::strerror(errno));
-        const size_t written = std::fwrite(contents.data(), 1, contents.size(), f);
-        const int writeErr = errno;
-        // fclose flushes; a full disk may only show up here.
-        const bool closed = std::fclose(f) == 0;
-        if (written != contents.size())
-            throw InputError(std::string("short write: ") + std::strerror(writeErr));
-        if (!closed) throw InputError(std::string("close failed: ") + std::strerror(errno));
-    });
+}  // namespace
+
+AtomicFileGroup::~AtomicFileGroup() { discard(); }
+
+void AtomicFileGroup::discard() noexcept {
+    for (const Staged& s : m_staged) {
+        ::unlink(s.tmp.c_str());
+        unregisterTemp(s.slot);
+    }
+    m_staged.clear();
+}
+
+void AtomicFileGroup::write(const std::string& path,
+                            const std::function<void(const std::string& tmpPath)>& writer) {
+    const Staged staged = createTemp(path);
+    try {
+        writer(staged.tmp);
+    } catch (const std::exception& e) {
+        fail(path, staged.tmp, staged.slot, e.what());
+    } catch (...) {
+        fail(path, staged.tmp, staged.slot, "unknown error");
+    }
+    m_staged.push_back(staged);
+}
+
+void AtomicFileGroup::commit() {
+    for (size_t i = 0; i < m_staged.size(); ++i) {
+        const Staged& s = m_staged[i];
+        if (std::rename(s.tmp.c_str(), s.path.c_str()) != 0) {
+            const int err = errno;
+            const std::string path = s.path;
+            m_staged.erase(m_staged.begin(), m_staged.begin() + long(i));  // renamed already
+            discard();
+            throw InputError(path, 0, std::string("cannot write file: rename failed: ") +
+                                          std::strerror(err));
+        }
+        unregisterTemp(s.slot);
+    }
+    m_staged.clear();
+}
+
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(const std::string& tmpPath)>& writer,
+                         AtomicFileGroup* group) {
+    if (group) {
+        group->write(path, writer);
+        return;
+    }
+    AtomicFileGroup single;
+    single.write(path, writer);
+    single.commit();
+}
+
+void writeFileAtomically(const std::string& path, const std::string& contents,
+                         AtomicFileGroup* group) {
+    writeFileAtomically(
+        path,
+        [&](const std::string& tmp) {
+            std::FILE* f = std::fopen(tmp.c_str(), "wb");
+            if (!f) throw InputError(std::strerror(errno));
+            const size_t written = std::fwrite(contents.data(), 1, contents.size(), f);
+            const int writeErr = errno;
+            // fclose flushes; a full disk may only show up here.
+            const bool closed = std::fclose(f) == 0;
+            if (written != contents.size())
+                throw InputError(std::string("short write: ") + std::strerror(writeErr));
+            if (!closed) throw InputError(std::string("close failed: ") + std::strerror(errno));
+        },
+        group);
+}
+
+void checkWritable(const std::string& path) {
+    const AtomicFileGroup::Staged probe = createTemp(path);
+    ::unlink(probe.tmp.c_str());
+    unregisterTemp(probe.slot);
 }
 
 void removeInFlightTempFiles() noexcept {

@@ -5,8 +5,43 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace raylab {
+
+/// \brief Files that replace their targets together: a render's EXR, PNG and
+/// statistics either all appear or none is touched.
+///
+/// write() fills a temporary beside each target (as writeFileAtomically
+/// does); commit() renames them all, in the order written. A group destroyed
+/// before commit() (a later write failed, an exception) removes every
+/// temporary and leaves every target as it was. The renames themselves stay
+/// within each target's directory, where they do not fail in practice.
+class AtomicFileGroup {
+public:
+    AtomicFileGroup() = default;
+    AtomicFileGroup(const AtomicFileGroup&) = delete;
+    AtomicFileGroup& operator=(const AtomicFileGroup&) = delete;
+    ~AtomicFileGroup();
+
+    /// \throws InputError(path, 0, reason) like writeFileAtomically; files
+    ///         written before stay staged until commit() or destruction.
+    void write(const std::string& path,
+               const std::function<void(const std::string& tmpPath)>& writer);
+    /// \throws InputError(path, 0, reason) when a rename fails; the
+    ///         temporaries not yet renamed are removed.
+    void commit();
+
+    /// One staged file (public for the helpers in atomic_file.cpp).
+    struct Staged {
+        std::string path, tmp;
+        int slot;  ///< removeInFlightTempFiles() registry slot, -1 if untracked
+    };
+
+private:
+    void discard() noexcept;
+    std::vector<Staged> m_staged;
+};
 
 /// \brief Writes `path` atomically.
 ///
@@ -20,12 +55,22 @@ namespace raylab {
 /// \throws InputError(path, 0, reason) when the temporary file cannot be
 ///         created, the writer throws, or the rename fails; the temporary file
 ///         is removed and `path` is left untouched in every case.
+/// \param group  when given, the file is staged in it instead: it appears at
+///               group->commit(), together with the group's other files
 void writeFileAtomically(const std::string& path,
-                         const std::function<void(const std::string& tmpPath)>& writer);
+                         const std::function<void(const std::string& tmpPath)>& writer,
+                         AtomicFileGroup* group = nullptr);
 
 /// \brief Writes the bytes of `contents` to `path` atomically (see above).
 /// \throws InputError(path, 0, reason) on any failure.
-void writeFileAtomically(const std::string& path, const std::string& contents);
+void writeFileAtomically(const std::string& path, const std::string& contents,
+                         AtomicFileGroup* group = nullptr);
+
+/// \brief Fails early, before a long render, when `path` cannot be written:
+/// its directory is missing or read-only, or `path` is a directory. Creates
+/// and removes a temporary beside it; `path` itself is not touched.
+/// \throws InputError(path, 0, "cannot write file: reason")
+void checkWritable(const std::string& path);
 
 /// \brief Unlinks every temporary file of a write that is still in progress.
 ///

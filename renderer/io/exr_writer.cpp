@@ -77,7 +77,8 @@ char* bytes(T* p) {
 
 }  // namespace
 
-void writeExr(const std::string& path, const Film& film, const ExrOptions& opts) {
+void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
+              AtomicFileGroup* group) {
     if (film.width <= 0 || film.height <= 0)
         throw InputError(path, 0,
                          "cannot write EXR: empty image (" + std::to_string(film.width) + "x" +
@@ -158,7 +159,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts)
         Imf::OutputFile file(tmp.c_str(), header, threads);
         file.setFrameBuffer(fb);
         file.writePixels(film.height);
-    });
+    }, group);
 }
 
 }  // namespace raylab

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "renderer/film.h"
+#include "renderer/io/atomic_file.h"
 
 namespace raylab {
 
@@ -42,6 +43,8 @@ struct ExrOptions {
 /// (Z +inf, N and albedo 0, objectId -1), so every file has all 12 channels.
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent
 ///         or the file cannot be written; `path` is then left untouched.
-void writeExr(const std::string& path, const Film& film, const ExrOptions& opts);
+/// With `group`, the file is staged in it and appears at group->commit().
+void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
+              AtomicFileGroup* group = nullptr);
 
 }  // namespace raylab

@@ -32,7 +32,7 @@ std::array<uint8_t, 3> toneMapSrgb8(float r, float g, float b, double exposure) 
     return {encodeChannel(r, scale), encodeChannel(g, scale), encodeChannel(b, scale)};
 }
 
-void writePng(const std::string& path, const Film& film, double exposure) {
+void writePng(const std::string& path, const Film& film, double exposure, AtomicFileGroup* group) {
     if (film.width <= 0 || film.height <= 0)
         throw InputError(path, 0,
                          "cannot write PNG: empty image (" + std::to_string(film.width) + "x" +
@@ -64,7 +64,7 @@ void writePng(const std::string& path, const Film& film, double exposure) {
         const std::string message = image.message;
         png_image_free(&image);
         if (!ok) throw InputError("libpng: " + message);
-    });
+    }, group);
 }
 
 }  // namespace raylab

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "renderer/film.h"
+#include "renderer/io/atomic_file.h"
 
 namespace raylab {
 
@@ -24,6 +25,8 @@ std::array<uint8_t, 3> toneMapSrgb8(float r, float g, float b, double exposure);
 /// pixel, row 0 at the top, sRGB chunk), atomically. Alpha is not written.
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent
 ///         or the file cannot be written; `path` is then left untouched.
-void writePng(const std::string& path, const Film& film, double exposure = 0);
+/// With `group`, the file is staged in it and appears at group->commit().
+void writePng(const std::string& path, const Film& film, double exposure = 0,
+              AtomicFileGroup* group = nullptr);
 
 }  // namespace raylab

@@ -120,3 +120,72 @@ TEST_CASE("atomic file: removeInFlightTempFiles deletes the temporary of a write
 TEST_CASE("atomic file: empty path is rejected") {
     CHECK_THROWS_AS(writeFileAtomically("", std::string("x")), InputError);
 }
+
+TEST_CASE("atomic file group: all files appear at commit, none before") {
+    TempDir dir;
+    AtomicFileGroup group;
+    writeFileAtomically(dir.file("a.exr"), std::string("image"), &group);
+    writeFileAtomically(dir.file("a.json"), std::string("stats"), &group);
+    CHECK_FALSE(std::filesystem::exists(dir.file("a.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir.file("a.json")));
+    CHECK(inFlightTempFileCount() == 2);
+    group.commit();
+    CHECK(readBytes(dir.file("a.exr")) == "image");
+    CHECK(readBytes(dir.file("a.json")) == "stats");
+    CHECK(dir.entries() == std::vector<std::string>{"a.exr", "a.json"});
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file group: a failed later write leaves every earlier target untouched") {
+    TempDir dir;
+    writeFileAtomically(dir.file("a.exr"), std::string("old image"));
+    writeFileAtomically(dir.file("a.png"), std::string("old preview"));
+    {
+        AtomicFileGroup group;
+        writeFileAtomically(dir.file("a.exr"), std::string("new image"), &group);
+        writeFileAtomically(dir.file("a.png"), std::string("new preview"), &group);
+        // The statistics cannot be written: the render command stops here and
+        // the group goes out of scope without commit().
+        CHECK_THROWS_AS(writeFileAtomically(dir.file("no/dir/a.json"), std::string("s"), &group),
+                        InputError);
+    }
+    CHECK(readBytes(dir.file("a.exr")) == "old image");
+    CHECK(readBytes(dir.file("a.png")) == "old preview");
+    CHECK(dir.entries() == std::vector<std::string>{"a.exr", "a.png"});
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file group: a failed rename removes the remaining temporaries") {
+    TempDir dir;
+    AtomicFileGroup group;
+    writeFileAtomically(dir.file("first.txt"), std::string("1"), &group);
+    writeFileAtomically(dir.file("second"), std::string("2"), &group);
+    writeFileAtomically(dir.file("third.txt"), std::string("3"), &group);
+    // Something else takes the second name meanwhile: rename(2) cannot
+    // replace a non-empty directory.
+    std::filesystem::create_directories(dir.file("second/child"));
+    CHECK_THROWS_AS(group.commit(), InputError);
+    CHECK(readBytes(dir.file("first.txt")) == "1");  // renamed before the failure
+    CHECK(dir.entries() == std::vector<std::string>{"first.txt", "second"});
+    CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: checkWritable refuses missing folders and directories, touches nothing") {
+    TempDir dir;
+    CHECK_NOTHROW(checkWritable(dir.file("new.exr")));
+    CHECK(dir.entries().empty());
+    writeFileAtomically(dir.file("old.exr"), std::string("keep"));
+    CHECK_NOTHROW(checkWritable(dir.file("old.exr")));
+    CHECK(readBytes(dir.file("old.exr")) == "keep");
+    CHECK_THROWS_AS(checkWritable(dir.file("no/such/dir/out.exr")), InputError);
+    std::filesystem::create_directories(dir.file("folder.exr"));
+    try {
+        checkWritable(dir.file("folder.exr"));
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == dir.file("folder.exr"));
+        CHECK(std::string(e.what()).find("directory") != std::string::npos);
+    }
+    CHECK(dir.entries() == std::vector<std::string>{"folder.exr", "old.exr"});
+    CHECK(inFlightTempFileCount() == 0);
+}

@@ -22,7 +22,7 @@ const std::string kScene =
 TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit 2)") {
     const std::vector<std::vector<std::string>> bad = {
         {"--width", "1000000000"}, {"--width", "0"},        {"--width", "-8"},
-        {"--width", "8.5"},        {"--width", ""},         {"--width", "8x"},
+        {"--width", "8.5"},        {"--width", ""},         {"--width", "8x"},        {"--width", " 8"},
         {"--width", "99999999999999999999999"},             {"--height", "0x10"},
         {"--spp", "0"},            {"--spp", "-1"},         {"--depth", "0"},
         {"--depth", "1000000"},    {"--threads", "0"},      {"--threads", "-2"},
@@ -109,6 +109,53 @@ TEST_CASE("command line: a failed render never touches an existing output file")
     checkRefused(r, dir, {"bad.json", "out.exr", "out.png"}, 1, bad + ":1:", "look_at");
     CHECK(readFile(dir.file("out.exr")) == old);
     CHECK(readFile(dir.file("out.png")) == old);
+}
+
+TEST_CASE("command line: an unwritable --stats leaves the previous EXR and PNG byte-identical") {
+    // Checked before the render starts, and the outputs of a frame are
+    // committed together: nothing is replaced unless everything is written.
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    const std::string old = "previous render, must survive";
+    dir.write("out.exr", old);
+    dir.write("out.png", old);
+    const RunResult r = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--png",
+                                   dir.file("out.png"), "--stats", dir.file("no/dir/s.json"),
+                                   "--width", "8", "--height", "8", "--quiet"});
+    checkRefused(r, dir, {"out.exr", "out.png", "scene.json"}, 1,
+                 dir.file("no/dir/s.json") + ":", "cannot write");
+    CHECK(readFile(dir.file("out.exr")) == old);
+    CHECK(readFile(dir.file("out.png")) == old);
+}
+
+TEST_CASE("command line: outputs naming one file, the scene, or the wrong format are refused") {
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    const std::vector<std::vector<std::string>> clashes = {
+        {"-o", dir.file("a.exr"), "--png", dir.file("a.exr")},
+        {"-o", dir.file("a.exr"), "--stats", dir.file("sub/../a.exr")},
+        {"-o", dir.file("a.exr"), "--png", dir.file("a.png"), "--stats", dir.file("./a.png")},
+        {"-o", scene},
+        {"-o", dir.file("a.exr"), "--stats", scene},
+    };
+    std::filesystem::create_directories(dir.file("sub"));
+    for (const std::vector<std::string>& flags : clashes) {
+        std::vector<std::string> args{"render", scene, "--quiet"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        std::string shown;
+        for (const std::string& f : flags) shown += f + " ";
+        CAPTURE(shown);
+        checkRefused(runRaylab(args), dir, {"scene.json"}, 2, "", "same file");
+    }
+    CHECK(readFile(scene) == kScene);
+    // Output names that do not match the format written.
+    checkRefused(runRaylab({"render", scene, "-o", dir.file("a.png"), "--quiet"}), dir,
+                 {"scene.json"}, 2, "", ".exr");
+    checkRefused(runRaylab({"render", scene, "-o", dir.file("a"), "--quiet"}), dir,
+                 {"scene.json"}, 2, "", ".exr");
+    checkRefused(runRaylab({"render", scene, "-o", dir.file("a.exr"), "--png",
+                            dir.file("a.jpg"), "--quiet"}),
+                 dir, {"scene.json"}, 2, "", ".png");
 }
 
 TEST_CASE("command line: --width 65536 --height 65536 is refused by the memory guard") {
