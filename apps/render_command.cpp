@@ -275,7 +275,6 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
         exr.threads = options.threads;
         exr.scenePath = cli.scene;
         exr.accel = options.accel;
-        exr.renderSeconds = result.renderSeconds;
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.
         AtomicFileGroup files;

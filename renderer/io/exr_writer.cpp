@@ -112,7 +112,6 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     header.insert("raylab/command", Imf::StringAttribute(opts.commandLine));
     header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
     header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
-    header.insert("raylab/renderSeconds", Imf::FloatAttribute(float(opts.renderSeconds)));
     if (!opts.scenePath.empty())
         header.insert("raylab/scene", Imf::StringAttribute(opts.scenePath));
     if (!opts.accel.empty()) header.insert("raylab/accel", Imf::StringAttribute(opts.accel));

@@ -10,8 +10,9 @@
 //                             background (FLOAT rather than UINT so the -1 of
 //                             the Film survives; ids below 2^24 are exact)
 // Header attributes: "raylab/command" (string), "raylab/spp" (int),
-// "raylab/maxDepth" (int), "raylab/renderSeconds" (float), and when non-empty
-// "raylab/scene" and "raylab/accel" (strings).
+// "raylab/maxDepth" (int), and when non-empty "raylab/scene" and
+// "raylab/accel" (strings). Nothing that varies between runs (times, dates,
+// host names) goes into the file: the same command writes the same bytes.
 
 #include <string>
 
@@ -27,7 +28,6 @@ struct ExrOptions {
     std::string accel;         ///< accelerator name (omitted when empty)
     int spp = 0;               ///< samples per pixel
     int maxDepth = 0;          ///< maximum ray depth
-    double renderSeconds = 0;  ///< wall time of the render pass
     /// Threads compressing scan-line blocks (0: one per hardware thread). OpenEXR's
     /// process-wide worker pool is grown to this size if it is smaller. The file's
     /// bytes do not depend on it.

@@ -92,17 +92,26 @@ TEST_CASE("cli: a render writes EXR, PNG and stats, and prints a summary") {
     CHECK(quiet.err.empty());
 }
 
-TEST_CASE("cli: the same render is byte-identical for 1 and 2 threads") {
+TEST_CASE("cli: the same render is byte-identical for 1 and 2 threads and across runs") {
     cli::TempDir dir;
     const std::string scene = dir.write("tiny.json", kTinyScene);
-    // The EXR header records the command line and the render time, so the
-    // pixels are compared through the PNG preview (exact 8-bit values) here;
-    // tests/renderer compares the float film bit for bit.
-    REQUIRE(cli::run("render " + scene + " -o " + dir.file("1.exr") + " --png " + dir.file("1.png") +
-                     " --threads 1 --quiet").exitCode == 0);
-    REQUIRE(cli::run("render " + scene + " -o " + dir.file("2.exr") + " --png " + dir.file("2.png") +
-                     " --threads 2 --quiet").exitCode == 0);
+    // The EXR header records the command line (which names the thread count
+    // when --threads is given), so across thread counts the pixels are
+    // compared through the PNG and `raylab compare`; the same command twice
+    // must give the same EXR bytes.
+    const auto render = [&](const std::string& name, const std::string& flags) {
+        REQUIRE(cli::run("render " + scene + " -o " + dir.file(name + ".exr") + " --png " +
+                         dir.file(name + ".png") + " " + flags + " --quiet").exitCode == 0);
+    };
+    render("1", "--threads 1");
+    render("2", "--threads 2");
     CHECK(cli::slurp(dir.file("1.png")) == cli::slurp(dir.file("2.png")));
+    const cli::Result c = cli::run("compare " + dir.file("1.exr") + " " + dir.file("2.exr"));
+    CHECK(c.exitCode == 0);
+    CHECK(c.out.find("(100.0000%)") != std::string::npos);
+    const std::string first = cli::slurp(dir.file("2.exr"));
+    render("2", "--threads 2");
+    CHECK(cli::slurp(dir.file("2.exr")) == first);
 }
 
 TEST_CASE("cli: compare reports identical and differing renders; --polygons triangles") {
