@@ -55,12 +55,14 @@ const char* const kRenderHelp =
     "\n"
     "image:\n"
     "  --width W, --height H    resolution in pixels (1..65536)\n"
-    "  --spp N                  samples per pixel, stratified and jittered when N > 1 (default 1)\n"
-    "  --depth D                ray-tree depth limit, the camera ray is depth 1 (default 5)\n"
-    "  --seed S                 seed of the per-pixel jitter (default 0)\n"
+    "  --spp N                  samples per pixel (1..65536), stratified and jittered when N > 1\n"
+    "                           (default 1); not with --adaptive or --spd, which sample pixel\n"
+    "                           corners instead (a scene file's spp is then ignored)\n"
+    "  --depth D                ray-tree depth limit (1..64), the camera ray is depth 1 (default 5)\n"
+    "  --seed S                 seed of the per-pixel jitter (0..2^53, default 0)\n"
     "  --adaptive T             Whitted adaptive supersampling: subdivide where corner samples differ\n"
     "                           by more than T (0 = off)\n"
-    "  --adaptive-levels L      maximum subdivision levels for --adaptive (default 2)\n"
+    "  --adaptive-levels L      maximum subdivision levels for --adaptive (1..8, default 2)\n"
     "  --min-weight W           prune rays whose accumulated weight is below W (default 0 = off)\n"
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
@@ -130,13 +132,13 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
-        else if (a == "--width") o.width = int(p.integer(a, 1, 65536));
-        else if (a == "--height") o.height = int(p.integer(a, 1, 65536));
-        else if (a == "--spp") o.spp = int(p.integer(a, 1, 65536));
-        else if (a == "--depth") o.maxDepth = int(p.integer(a, 1, 64));
-        else if (a == "--seed") o.seed = uint64_t(p.integer(a, 0, (1LL << 62)));
+        else if (a == "--width") o.width = int(p.integer(a, 1, kMaxImageSide));
+        else if (a == "--height") o.height = int(p.integer(a, 1, kMaxImageSide));
+        else if (a == "--spp") o.spp = int(p.integer(a, 1, kMaxSpp));
+        else if (a == "--depth") o.maxDepth = int(p.integer(a, 1, kMaxDepth));
+        else if (a == "--seed") o.seed = uint64_t(p.integer(a, 0, kMaxSeed));
         else if (a == "--adaptive") o.adaptiveThreshold = p.number(a, 0, 1e30);
-        else if (a == "--adaptive-levels") o.adaptiveMaxLevel = int(p.integer(a, 1, 8));
+        else if (a == "--adaptive-levels") o.adaptiveMaxLevel = int(p.integer(a, 1, kMaxAdaptiveLevels));
         else if (a == "--min-weight") o.minWeight = p.number(a, 0, 1);
         else if (a == "--spd") o.spd = true;
         else if (a == "--threads") o.threads = int(p.integer(a, 1, 4096));
@@ -152,6 +154,10 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     }
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
     if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
+    if (o.spp && *o.spp > 1 && (o.spd || o.adaptiveThreshold.value_or(0) > 0))
+        throw UsageError(std::string("--spp cannot be combined with ") +
+                         (o.spd ? "--spd" : "--adaptive") +
+                         ", which samples pixel corners instead");
     // Two names for one file would make one output overwrite another, or the scene.
     const std::pair<const char*, const std::string*> names[] = {
         {"the scene", &cli.scene}, {"-o", &cli.exr}, {"--png", &cli.png}, {"--stats", &cli.stats}};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace raylab {
 
@@ -48,17 +49,42 @@ template <class T>
 constexpr T lengthSquared(const Vec3T<T>& v) { return dot(v, v); }
 
 template <class T>
-T length(const Vec3T<T>& v) { return std::sqrt(dot(v, v)); }
+Vec3T<T> abs(const Vec3T<T>& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 
-/// Unit vector along v; the zero vector stays zero (never NaN).
 template <class T>
-Vec3T<T> normalize(const Vec3T<T>& v) {
-    const T len = length(v);
-    return len > T(0) ? v / len : Vec3T<T>{};
+T maxComponent(const Vec3T<T>& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+
+/// Whether dot(v, v) is a normal number: squaring neither overflowed nor
+/// underflowed, so sqrt of it is |v| to rounding (the common case).
+template <class T>
+bool squaredLengthIsSafe(T l2) {
+    return l2 >= std::numeric_limits<T>::min() && l2 <= std::numeric_limits<T>::max();
 }
 
+/// |v|, also for components near the ends of the range (1e±300 in double):
+/// there the vector is scaled by its largest component before squaring.
 template <class T>
-Vec3T<T> abs(const Vec3T<T>& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
+T length(const Vec3T<T>& v) {
+    const T l2 = dot(v, v);
+    if (squaredLengthIsSafe(l2)) return std::sqrt(l2);
+    const T m = maxComponent(abs(v));
+    if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return std::sqrt(l2);  // 0, Inf, NaN
+    const Vec3T<T> s = v / m;
+    return m * std::sqrt(dot(s, s));
+}
+
+/// Unit vector along v; the zero vector stays zero (never NaN). Scaled like
+/// length() where squaring would overflow or underflow.
+template <class T>
+Vec3T<T> normalize(const Vec3T<T>& v) {
+    const T l2 = dot(v, v);
+    if (squaredLengthIsSafe(l2)) return v / std::sqrt(l2);
+    const T m = maxComponent(abs(v));
+    if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return Vec3T<T>{};
+    const Vec3T<T> s = v / m;
+    return s / std::sqrt(dot(s, s));
+}
 
 template <class T>
 Vec3T<T> min(const Vec3T<T>& a, const Vec3T<T>& b) {
@@ -69,9 +95,6 @@ template <class T>
 Vec3T<T> max(const Vec3T<T>& a, const Vec3T<T>& b) {
     return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
-
-template <class T>
-T maxComponent(const Vec3T<T>& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 /// Index (0, 1, 2) of the component with the largest magnitude.
 template <class T>

@@ -10,6 +10,14 @@
 
 namespace raylab {
 
+// Limits shared by every way of setting these (flags, JSON, NFF), so a value
+// one accepts the others accept too.
+constexpr int kMaxImageSide = 65536;  ///< width and height (the memory guard still applies)
+constexpr int kMaxSpp = 65536;
+constexpr int kMaxDepth = 64;  ///< RenderStats counts rays per depth up to this
+constexpr int kMaxAdaptiveLevels = 8;
+constexpr long long kMaxSeed = 1LL << 53;  ///< JSON numbers are doubles: exact up to here
+
 struct RenderOptions {
     int width = 640;
     int height = 480;

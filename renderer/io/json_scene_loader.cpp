@@ -17,6 +17,7 @@
 #include "renderer/io/obj_loader.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/io/text_file.h"
+#include "renderer/render_options.h"
 
 namespace raylab {
 
@@ -123,14 +124,15 @@ public:
         return x;
     }
 
-    int integer(const JsonValue& v, const std::string& path, int lo, int hi) const {
+    long long integer(const JsonValue& v, const std::string& path, long long lo,
+                      long long hi) const {
         const double x = number(v, path);
         if (x != std::floor(x)) fail(v, path, "must be an integer (got " + fmt(x) + ")");
         if (x < lo || x > hi)
             fail(v, path,
                  "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
                      fmt(x) + ")");
-        return int(x);
+        return static_cast<long long>(x);
     }
 
     bool boolean(const JsonValue& v, const std::string& path) const {
@@ -299,10 +301,10 @@ Scene SceneReader::read(const JsonValue& root) {
 void SceneReader::readImage(const JsonValue& v, const std::string& path) {
     const Fields f(*this, v, path, "the image settings", {"width", "height", "spp", "depth"});
     ImageSettings& im = m_scene.image;
-    if (const JsonValue* x = f.get("width")) im.width = integer(*x, f.path("width"), 1, 32768);
-    if (const JsonValue* x = f.get("height")) im.height = integer(*x, f.path("height"), 1, 32768);
-    if (const JsonValue* x = f.get("spp")) im.spp = integer(*x, f.path("spp"), 1, 65536);
-    if (const JsonValue* x = f.get("depth")) im.maxDepth = integer(*x, f.path("depth"), 1, 100);
+    if (const JsonValue* x = f.get("width")) im.width = int(integer(*x, f.path("width"), 1, kMaxImageSide));
+    if (const JsonValue* x = f.get("height")) im.height = int(integer(*x, f.path("height"), 1, kMaxImageSide));
+    if (const JsonValue* x = f.get("spp")) im.spp = int(integer(*x, f.path("spp"), 1, kMaxSpp));
+    if (const JsonValue* x = f.get("depth")) im.maxDepth = int(integer(*x, f.path("depth"), 1, kMaxDepth));
 }
 
 void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
@@ -312,12 +314,12 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive")) r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
     if (const JsonValue* x = f.get("adaptive_levels"))
-        r.adaptiveMaxLevel = integer(*x, f.path("adaptive_levels"), 1, 8);
+        r.adaptiveMaxLevel = int(integer(*x, f.path("adaptive_levels"), 1, kMaxAdaptiveLevels));
     if (const JsonValue* x = f.get("min_weight")) {
         r.minWeight = nonNegative(*x, f.path("min_weight"));
         if (*r.minWeight > 1) fail(*x, f.path("min_weight"), "must be in [0, 1] (got " + fmt(*r.minWeight) + ")");
     }
-    if (const JsonValue* x = f.get("seed")) r.seed = uint64_t(integer(*x, f.path("seed"), 0, 2147483647));
+    if (const JsonValue* x = f.get("seed")) r.seed = uint64_t(integer(*x, f.path("seed"), 0, kMaxSeed));
     if (const JsonValue* x = f.get("precision"))
         r.precision = choice<std::string>(*x, f.path("precision"), {{"float", "float"}, {"double", "double"}});
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
@@ -784,7 +786,7 @@ void SceneReader::readCheckerboard(const Fields& f, const std::string& name) {
     const Vec3 eu = direction(f.need("edge_u"), f.path("edge_u"));
     const Vec3 ev = direction(f.need("edge_v"), f.path("edge_v"));
     // sin of the angle between the edges; below ~1e-9 there is no plane.
-    if (!(length(cross(eu, ev)) > 1e-9 * length(eu) * length(ev)))
+    if (!(length(cross(normalize(eu), normalize(ev))) > 1e-9))
         fail(f.need("edge_v"), f.path("edge_v"), "must not be parallel to 'edge_u'");
     int nu = 8, nv = 8;
     if (const JsonValue* d = f.get("divisions")) {
@@ -793,10 +795,10 @@ void SceneReader::readCheckerboard(const Fields& f, const std::string& name) {
                 fail(*d, f.path("divisions"),
                      "expected a number or [nu, nv], got " + std::to_string(d->size()) +
                          " elements");
-            nu = integer(d->at(0), indexPath(f.path("divisions"), 0), 1, 4096);
-            nv = integer(d->at(1), indexPath(f.path("divisions"), 1), 1, 4096);
+            nu = int(integer(d->at(0), indexPath(f.path("divisions"), 0), 1, 4096));
+            nv = int(integer(d->at(1), indexPath(f.path("divisions"), 1), 1, 4096));
         } else {
-            nu = nv = integer(*d, f.path("divisions"), 1, 4096);
+            nu = nv = int(integer(*d, f.path("divisions"), 1, 4096));
         }
         // Two triangles per square, built before the first pixel and not
         // interruptible: a 300-byte file must not ask for 33 million.

@@ -41,6 +41,7 @@
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/render_options.h"
 
 namespace raylab {
 
@@ -245,8 +246,8 @@ private:
         if (t == "resolution") {
             m_expected = "2 integers (width height)";
             const long long w = integer("width"), h = integer("height");
-            if (w < 1 || h < 1 || w > 65536 || h > 65536)
-                failEntity("expected two integers in [1, 65536], got " + std::to_string(w) + " " +
+            if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+                failEntity("expected two integers in [1, " + std::to_string(kMaxImageSide) + "], got " + std::to_string(w) + " " +
                            std::to_string(h));
             m_width = int(w);
             m_height = int(h);

@@ -22,7 +22,8 @@ const std::string kScene =
 TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit 2)") {
     const std::vector<std::vector<std::string>> bad = {
         {"--width", "1000000000"}, {"--width", "0"},        {"--width", "-8"},
-        {"--width", "8.5"},        {"--width", ""},         {"--width", "8x"},        {"--width", " 8"},
+        {"--width", "8.5"},        {"--width", ""},         {"--width", "8x"},        {"--width", " 8"},       {"--spp", "4", "--spd"},
+        {"--adaptive", "0.1", "--spp", "4"},
         {"--width", "99999999999999999999999"},             {"--height", "0x10"},
         {"--spp", "0"},            {"--spp", "-1"},         {"--depth", "0"},
         {"--depth", "1000000"},    {"--threads", "0"},      {"--threads", "-2"},

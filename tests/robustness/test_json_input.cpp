@@ -97,6 +97,9 @@ TEST_CASE("json: zero, negative and absurd counts and resolutions are refused") 
     refused(withImage(R"({"width": 1000000000, "height": 8})"), 5, "image.width");
     refused(withImage(R"({"width": 8, "height": 8, "spp": 0})"), 5, "image.spp");
     refused(withImage(R"({"width": 8, "height": 8, "depth": -1})"), 5, "image.depth");
+    // The same limits as the command line: depth 1..64, width and height 1..65536.
+    refused(withImage(R"({"width": 8, "height": 8, "depth": 65})"), 5, "[1, 64]");
+    refused(withImage(R"({"width": 65537, "height": 8})"), 5, "[1, 65536]");
     refused(scene(R"({"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0]]})"), 4, "at least 3");
     refused(scene(R"({"type": "checkerboard", "origin": [0, 0, 0], "edge_u": [1, 0, 0],
   "edge_v": [0, 0, 1], "divisions": 0, "materials": ["a", "a"]})"),
@@ -240,4 +243,11 @@ TEST_CASE("json: lights inside objects and other odd but valid scenes render") {
     rendered(scene("", R"("eye": [0, 0, 5], "look_at": [0, 0, 0])"));  // no objects
     rendered(scene(R"({"type": "sphere", "center": [0, 0, -1e300], "radius": 1e299},
                      {"type": "sphere", "center": [0, 0, 0], "radius": 1e-300})"));
+    // Vectors whose squares overflow or underflow are still directions: an
+    // eye 1e300 away is a valid (if useless) camera, not "up parallel to the
+    // view", and a normal of length 1e-300 is not "the zero vector".
+    rendered(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
+                   R"("eye": [0, 0, 1e300], "look_at": [0, 0, 0], "up": [0, 1e-300, 0])"));
+    rendered(scene(R"({"type": "plane", "point": [0, -1, 0], "normal": [0, 1e-300, 0]},
+                     {"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1e300], "radius": 1})"));
 }

@@ -41,7 +41,7 @@ TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
 }
 
 TEST_CASE("memory guard: a huge JSON image is refused up front") {
-    // 32768^2 x 96 bytes = 1.03e11 bytes (96 GiB), the largest the format allows.
+    // 32768^2 x 96 bytes = 1.03e11 bytes (96 GiB).
     if (32768.0 * 32768.0 * kBytesPerPixel <= 0.8 * machineMemory()) return;
     Scratch dir;
     const std::string scene = dir.write(
