@@ -258,9 +258,13 @@ private:
             // more numbers than it takes.
             if (previous.empty())
                 failAt(m_tok.tokenLine(), "unexpected number " + quoted(t) + " before any entity");
-            failAt(m_tok.tokenLine(), "unexpected number " + quoted(t) + ": too many numbers for '" +
-                                          std::string(previous) + "' (line " +
-                                          std::to_string(previousLine) + ")");
+            const int line = m_tok.tokenLine();
+            failAt(line, "unexpected number " + quoted(t) + ": too many numbers for '" +
+                             std::string(previous) + "'" +
+                             (previousLine == line
+                                  ? std::string()
+                                  : " ('" + std::string(previous) + "' starts on line " +
+                                        std::to_string(previousLine) + ")"));
         }
         failAt(m_tok.tokenLine(), "unknown entity " + quoted(t));
     }

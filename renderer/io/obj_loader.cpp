@@ -124,26 +124,34 @@ int lineInMessage(const std::string& message) {
     return std::atoi(message.c_str() + at + 5);
 }
 
-/// Collects warnings once each, counting repeats (an OBJ without its MTL
-/// repeats "material not found" for every usemtl).
+/// Collects warnings once each, counting repeats (an OBJ whose MTL lacks a
+/// material repeats "material not found" for every usemtl), and formats them
+/// as "FILE:LINE: message" (or "FILE: message" when no line applies).
 class Warnings {
 public:
-    void add(const std::string& message) {
-        auto [it, inserted] = m_counts.emplace(message, 0);
+    explicit Warnings(std::string path) : m_path(std::move(path)) {}
+    void add(const std::string& message, int line = 0) {
+        auto [it, inserted] = m_counts.emplace(message, Entry{line, 0});
         if (inserted) m_order.push_back(message);
-        ++it->second;
+        ++it->second.count;
     }
     std::vector<std::string> lines() const {
         std::vector<std::string> out;
         for (const std::string& m : m_order) {
-            const int n = m_counts.at(m);
-            out.push_back(n > 1 ? m + " (" + std::to_string(n) + " times)" : m);
+            const Entry& e = m_counts.at(m);
+            out.push_back(m_path + (e.line > 0 ? ":" + std::to_string(e.line) : "") + ": " + m +
+                          (e.count > 1 ? " (" + std::to_string(e.count) + " times)" : ""));
         }
         return out;
     }
 
 private:
-    std::map<std::string, int> m_counts;
+    struct Entry {
+        int line;
+        int count;
+    };
+    std::string m_path;
+    std::map<std::string, Entry> m_counts;
     std::vector<std::string> m_order;
 };
 
@@ -273,6 +281,60 @@ int lineOfStatement(const std::string& text, const std::string& kw, size_t index
     return found;
 }
 
+/// Line of the first statement `kw` whose arguments contain `arg`, or 0.
+int lineOfStatementWith(const std::string& text, const std::string& kw, const std::string& arg) {
+    int found = 0;
+    forEachStatement(text, [&](const std::string& k, const char* rest, const char* eol, int line) {
+        if (found == 0 && k == kw && std::string(rest, eol).find(arg) != std::string::npos)
+            found = line;
+    });
+    return found;
+}
+
+/// The text between the first `open` and the following `close` in s, trimmed
+/// of blanks and quotes ("" when absent).
+std::string between(const std::string& s, const std::string& open, const std::string& close) {
+    const size_t a = s.find(open);
+    if (a == std::string::npos) return "";
+    const size_t b = s.find(close, a + open.size());
+    if (b == std::string::npos) return "";
+    std::string v = s.substr(a + open.size(), b - a - open.size());
+    const auto keep = [](char c) { return c != ' ' && c != '\''; };
+    while (!v.empty() && !keep(v.front())) v.erase(v.begin());
+    while (!v.empty() && !keep(v.back())) v.pop_back();
+    return v;
+}
+
+/// tinyobjloader's warnings, reworded with the line they are about. It
+/// reports one missing library three ways ("Material file [ x ] not found",
+/// "Failed to load material file(s)", then "material [ 'm' ] not found" for
+/// every usemtl); the user gets one line for it, at its mtllib statement.
+void addTinyObjWarnings(const std::vector<std::string>& messages, const std::string& text,
+                        Warnings& warn) {
+    bool libraryMissing = false;
+    for (const std::string& m : messages) {
+        if (m.rfind("Material file [", 0) == 0) {
+            const std::string name = between(m, "[", "]");
+            warn.add("material library '" + name +
+                         "' not found beside the OBJ; its materials get the default material",
+                     lineOfStatementWith(text, "mtllib", name));
+            libraryMissing = true;
+        }
+    }
+    for (const std::string& m : messages) {
+        if (m.rfind("Material file [", 0) == 0 || m.rfind("Failed to load material file", 0) == 0)
+            continue;
+        if (m.rfind("material [", 0) == 0 && m.find("not found") != std::string::npos) {
+            if (libraryMissing) continue;  // a consequence of the missing library
+            const std::string name = between(m, "[", "]");
+            warn.add("material '" + name + "' is not defined in the MTL libraries; the default "
+                     "material is used", lineOfStatementWith(text, "usemtl", name));
+            continue;
+        }
+        warn.add(m);
+    }
+}
+
 Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
 
 /// The MTL -> Whitted mapping documented in obj_loader.h.
@@ -359,7 +421,7 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     const bool ok = tinyobj::LoadObj(&attrib, &shapes, &mtls, &warnText, &errText, &stream,
                                      &mtlReader, /*triangulate=*/true,
                                      /*default_vcols_fallback=*/false);
-    Warnings warn;
+    Warnings warn(path);
     const std::vector<std::string> errors = splitMessages(errText);
     if (!ok) {
         const std::string first = errors.empty() ? "cannot parse the OBJ file" : errors.front();
@@ -378,7 +440,7 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
                 idx.normal_index < -1 ||
                 (idx.normal_index >= 0 && size_t(idx.normal_index) >= normalCount))
                 throw InputError(path, 0, "face index out of range");
-    for (const std::string& w : splitMessages(warnText)) warn.add(w);
+    addTinyObjWarnings(splitMessages(warnText), text, warn);
 
     for (size_t i = 0; i < vertexCount; ++i)
         for (int k = 0; k < 3; ++k)
@@ -455,12 +517,18 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     }
     for (PartBuilder* b : {&smooth, &flat})
         if (b->part.mesh->triangleCount() > 0) model.parts.push_back(std::move(b->part));
-    if (model.parts.empty()) throw InputError(path, 0, "the OBJ file has no triangles");
+    if (model.parts.empty()) {
+        if (const int firstFace = lineOfStatement(text, "f", 0))
+            throw InputError(path, firstFace,
+                             "the OBJ file has no triangles: every face has zero area or fewer "
+                             "than 3 corners");
+        throw InputError(path, 0, "the OBJ file has no faces");
+    }
 
     model.warnings = warn.lines();
     if (options.printWarnings)
         for (const std::string& w : model.warnings)
-            std::fprintf(stderr, "raylab: warning: %s\n", terminalSafe(path + ": " + w).c_str());
+            std::fprintf(stderr, "raylab: warning: %s\n", terminalSafe(w).c_str());
     return model;
 }
 

@@ -211,11 +211,27 @@ TEST_CASE("obj: a missing MTL is a warning and the mesh still loads") {
                                        "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\nusemtl a\nf 3 2 1\n");
     const ObjModel m = loadObj(path, quiet());
     CHECK(m.triangleCount() == 3);
-    CHECK(anyWarning(m, "nothere.mtl"));
-    // Repeated warnings are reported once with a count.
-    CHECK(anyWarning(m, "material [ 'a' ] not found in .mtl (2 times)"));
+    // One warning, at the mtllib line, not tinyobjloader's three messages.
+    REQUIRE(m.warnings.size() == 1);
+    CHECK(m.warnings[0] == path + ":1: material library 'nothere.mtl' not found beside the OBJ; "
+                           "its materials get the default material");
     REQUIRE(m.materials.size() == 1);
     CHECK(m.materials[0].name == "default");
+}
+
+TEST_CASE("obj: a material the MTL does not define is one warning at its first usemtl") {
+    IoTempDir dir;
+    dir.write("lib.mtl", "newmtl red\nKd 1 0 0\n");
+    const std::string path = dir.write("undef.obj",
+                                       "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                       "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 2\n"
+                                       "usemtl blue\nf 3 2 1\n");
+    const ObjModel m = loadObj(path, quiet());
+    CHECK(m.triangleCount() == 3);
+    // Repeated warnings are reported once with a count.
+    REQUIRE(m.warnings.size() == 1);
+    CHECK(m.warnings[0] == path + ":7: material 'blue' is not defined in the MTL libraries; the "
+                           "default material is used (2 times)");
 }
 
 TEST_CASE("obj: bad face indices are errors with the face's line") {
@@ -262,7 +278,14 @@ TEST_CASE("obj: degenerate triangles, empty files and missing files") {
     CHECK(anyWarning(m, "dropped 2 degenerate (zero-area) triangles"));
 
     test::Failure f = failureOf([&] { loadObj(dir.write("empty.obj", "v 0 0 0\n"), quiet()); });
-    CHECK(f.message == "the OBJ file has no triangles");
+    CHECK(f.message == "the OBJ file has no faces");
+    CHECK(f.line == 0);
+    f = failureOf([&] {
+        loadObj(dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\n# collinear\nf 1 2 3\n"), quiet());
+    });
+    CHECK(f.message ==
+          "the OBJ file has no triangles: every face has zero area or fewer than 3 corners");
+    CHECK(f.line == 5);
     f = failureOf([&] { loadObj(dir.file("absent.obj"), quiet()); });
     CHECK(f.file == dir.file("absent.obj"));
     CHECK(f.message == "cannot open: No such file or directory");

@@ -271,7 +271,9 @@ TEST_CASE("nff: every error names the exact line") {
         {"too few numbers, entity over two lines", kView + "c 0 0 0 1\n0 1 0\n\ns 0 0 0 1\n", 9,
          "c: expected 8 numbers (base x y z radius, apex x y z radius), got 7 numbers before 's' "
          "on line 11 ('c' starts on line 8)"},
-        {"too many numbers", kView + "s 0 0 0 1 2\n", 8, "too many numbers for 's' (line 8)"},
+        {"too many numbers", kView + "s 0 0 0 1 2\n", 8, "too many numbers for 's'"},
+        {"too many numbers, entity over two lines", kView + "s 0 0\n0 1\n2\n", 10,
+         "too many numbers for 's' ('s' starts on line 8)"},
         {"number before any entity", "1 v\n", 1, "unexpected number '1' before any entity"},
         {"material missing ior", kView + "f 1 1 1 1 0 1 0\ns 0 0 0 1\n", 8,
          "f: expected 8 numbers (R G B Kd Ks Shine T ior), got 7 numbers before 's' on line 9"},

@@ -60,18 +60,18 @@ std::string rendered(const std::string& obj,
 }  // namespace
 
 TEST_CASE("obj: empty files, binary garbage and files without faces are refused") {
-    refused("", 0, "no triangles");
-    refused("# nothing but a comment\n\n", 0, "no triangles");
+    refused("", 0, "no faces");
+    refused("# nothing but a comment\n\n", 0, "no faces");
     refused(std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00\x00\xff\xfe", 14), 0, "");
-    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\n", 0, "no triangles");
-    refused("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n", 0, "no triangles");  // zero area only
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\n", 0, "no faces");
+    refused("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n", 4, "zero area");  // zero area only
 }
 
 TEST_CASE("obj: a file truncated in the middle of a face is refused or stops cleanly") {
     // "f 1 2" is a face with two corners: it has no triangle.
-    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2", 0, "no triangles");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2", 4, "fewer than 3 corners");
     // Cut inside an index: "f 1 2 3" becomes "f 1 2 " (trailing blank).
-    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 ", 0, "no triangles");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 ", 4, "fewer than 3 corners");
 }
 
 TEST_CASE("obj: face indices out of range are refused at the face's line") {
