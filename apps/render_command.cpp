@@ -32,6 +32,7 @@
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -210,7 +211,7 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     else if (cli.polygons == "projected") setPolygonInsideTest(scene, PolygonTest::Projected);
     else if (cli.polygons == "watertight") setPolygonInsideTest(scene, PolygonTest::Watertight);
     RenderStats stats;
-    stats.parseSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    stats.parseSeconds = secondsSince(t0);
 
     const RenderOptions options = resolveRenderOptions(scene, cli.overrides);
     checkMemoryBudget(scene, options);
@@ -229,7 +230,7 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     } catch (const std::invalid_argument& e) {
         throw InputError(cli.scene, 0, e.what());
     }
-    stats.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    stats.buildSeconds = secondsSince(t0);
 
     const EffectSet effects = analyseEffects(scene, options);
     const FrameRange frames = cli.frames.value_or(FrameRange{});
@@ -286,7 +287,7 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
         AtomicFileGroup files;
         writeExr(output(cli.exr), result.film, exr, &files);
         if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure, &files);
-        stats.writeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        stats.writeSeconds = secondsSince(t0);
         if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson(), &files);
         files.commit();
 

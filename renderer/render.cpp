@@ -17,6 +17,7 @@
 #include "geometry/random.h"
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -275,7 +276,7 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
     result.cancelled = cancel && cancel->load();
     if (!result.cancelled) frame.finish(buffers);
     result.renderSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        secondsSince(start);
 
     // Integer sums: the same totals whatever the thread count.
     for (const WorkCounters& c : counters) {

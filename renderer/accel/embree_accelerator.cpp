@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "renderer/accel/embree_factory.h"
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -244,7 +245,7 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& opt
     rtcCommitScene(m_scene.get());
     m_device.check("rtcCommitScene");
     m_buildSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        secondsSince(start);
 }
 
 void EmbreeAccelerator::addAnalyticShapes(const Scene& scene, RTCBuildQuality quality) {

@@ -18,6 +18,7 @@
 #include "renderer/io/png_writer.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -89,7 +90,7 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     const double c0 = processCpuSeconds();
     const std::unique_ptr<Accelerator> accel =
         makeAccelerator(options.accel, scene, options.accelOptions);
-    out.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.buildSeconds = secondsSince(t0);
     const double c1 = processCpuSeconds();
     out.buildCpuSeconds = c1 - c0;
     RenderResult r = render(scene, *accel, options, analyseEffects(scene, options), {}, cancel);

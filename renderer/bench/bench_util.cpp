@@ -43,12 +43,6 @@ int effectiveThreads(int threads) {
     return threads > 0 ? threads : std::max(1, tbb::info::default_concurrency());
 }
 
-double threadCpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());

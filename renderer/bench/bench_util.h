@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/timing.h"  // secondsSince, threadCpuSeconds
+
 namespace raylab {
 
 /// The CPU model from /proc/cpuinfo ("model name"), or "unknown CPU".
@@ -21,15 +23,6 @@ int logicalCores();
 /// Threads a TBB loop gets for a `threads` setting (0 = all cores).
 int effectiveThreads(int threads);
 
-/// Wall-clock seconds since t0.
-inline double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// CPU seconds consumed so far by the calling thread (CLOCK_THREAD_CPUTIME_ID).
-/// Unlike wall-clock time it does not count time the thread spent waiting for
-/// a core, so one-thread timings stay meaningful on a shared machine.
-double threadCpuSeconds();
 
 /// \brief The clock of a benchmark's timed phases.
 /// \details With one thread (TBB then runs the whole loop on the calling

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "renderer/accel/embree_accelerator.h"
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -88,7 +89,7 @@ double EmbreeReplay::run(int threads) {
                                   impl.trace(impl.prepared[i], scene);
                           });
     }
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return secondsSince(start);
 }
 
 const std::vector<uint8_t>& EmbreeReplay::results() const { return m_impl->results; }

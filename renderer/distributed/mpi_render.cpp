@@ -22,6 +22,7 @@
 
 #include "renderer/distributed/item_codec.h"
 #include "renderer/distributed/work_schedule.h"
+#include "renderer/timing.h"
 
 // The C API only (no deprecated C++ bindings and their warnings).
 #define OMPI_SKIP_MPICXX 1
@@ -81,18 +82,6 @@ RenderResult renderDistributed(const MpiSession& mpi, const Scene& scene, const 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// CPU time of the calling thread: what an item costs, whatever else runs
-/// on the machine (wall time on shared cores includes the waits).
-int64_t threadCpuNs() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
-}
 
 // Message tags. Every message starts with the frame's epoch (the number of
 // renderDistributed calls so far), so a message from another frame is caught.
@@ -233,9 +222,9 @@ private:
         if (!m_stop.load(std::memory_order_relaxed)) {
             try {
                 const auto t0 = Clock::now();
-                const int64_t cpu0 = threadCpuNs();
+                const int64_t cpu0 = threadCpuNanoseconds();
                 m_frame.renderWorkItem(item, m_buffers, m_counters.local());
-                m_cpuNs += threadCpuNs() - cpu0;
+                m_cpuNs += threadCpuNanoseconds() - cpu0;
                 m_busyNs += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0)
                                 .count();
                 {
