@@ -60,19 +60,30 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
     return r;
 }
 
+MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives) {
+    MemoryEstimate e;
+    e.filmBytes = double(width) * double(height) * (4 + 1 + 3 + 3 + 1) * sizeof(float) * 2.0;
+    e.accelBytes = double(primitives) * 128.0;
+    return e;
+}
+
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options) {
-    // Film: RGBA + Z + N + albedo + objectId floats, plus the output encoders'
-    // copies (about as much again).
-    const double pixels = double(options.width) * double(options.height);
-    const double bytes = pixels * (4 + 1 + 3 + 3 + 1) * sizeof(float) * 2.0;
+    const size_t primitives = scene.primitiveCount();
+    const MemoryEstimate e = estimateRenderMemory(options.width, options.height, primitives);
     const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    if (available > 0 && bytes > 0.8 * available) {
+    if (available > 0 && e.total() > 0.8 * available) {
+        const auto mib = [](double bytes) { return std::to_string(int64_t(bytes / (1 << 20))); };
+        const std::string image =
+            "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";
+        const std::string what =
+            e.accelBytes < 0.01 * e.total()
+                ? image + " needs about " + mib(e.total()) + " MiB"
+                : image + " of " + std::to_string(primitives) + " primitives needs about " +
+                      mib(e.total()) + " MiB (film " + mib(e.filmBytes) +
+                      " MiB, acceleration structure " + mib(e.accelBytes) + " MiB)";
         throw InputError(scene.sourcePath, 0,
-                         "a " + std::to_string(options.width) + "x" +
-                             std::to_string(options.height) + " image needs about " +
-                             std::to_string(int64_t(bytes / (1 << 20))) +
-                             " MiB, more than this machine's memory allows (" +
-                             std::to_string(int64_t(available / (1 << 20))) + " MiB)");
+                         what + ", more than this machine's memory allows (" + mib(available) +
+                             " MiB)");
     }
 }
 

@@ -17,8 +17,22 @@ namespace raylab {
 /// SPD procedure's settings (512x512, depth 5), which explicit flags still override.
 RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o);
 
-/// Refuses (InputError) a render whose image buffers would not fit in the
-/// machine's memory, instead of letting the OOM killer end it half-way.
+/// What a render will still allocate once its scene is loaded.
+struct MemoryEstimate {
+    double filmBytes = 0;   ///< film layers and the output encoders' copies
+    double accelBytes = 0;  ///< the accelerator: Embree's float copy and BVH
+    double total() const { return filmBytes + accelBytes; }
+};
+
+/// Film: 12 floats per pixel (RGBA, Z, N, albedo, objectId), twice (the
+/// encoders copy it). Accelerator: 128 bytes per primitive, from a measured
+/// 138 bytes per triangle of a 524k-triangle checkerboard including raylab's
+/// own double mesh (already allocated when this is asked).
+MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives);
+
+/// Refuses (InputError) a render whose film and acceleration structure would
+/// not fit in 80% of the machine's memory, before either is allocated, instead
+/// of letting the OOM killer end it half-way.
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options);
 
 /// Sets the arithmetic of every analytic shape.

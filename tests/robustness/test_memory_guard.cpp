@@ -76,6 +76,15 @@ TEST_CASE("memory guard: checkMemoryBudget's arithmetic") {
     }
 }
 
+TEST_CASE("memory guard: the estimate counts the film and the acceleration structure") {
+    // 640x480 x 12 floats x 4 B x 2 = 29,491,200 B; 1e6 primitives x 128 B.
+    const raylab::MemoryEstimate e = raylab::estimateRenderMemory(640, 480, 1000000);
+    CHECK(e.filmBytes == 29491200.0);
+    CHECK(e.accelBytes == 128e6);
+    CHECK(e.total() == 157491200.0);
+    CHECK(raylab::estimateRenderMemory(1, 1, 0).accelBytes == 0);
+}
+
 TEST_CASE("memory guard: a tiny file cannot expand into an unbounded scene") {
     // A 300-byte checkerboard with 4096 x 4096 divisions asks for 33.5 million
     // triangles: measured on the 2-core machine, 2048 divisions take 32 s and
