@@ -44,8 +44,9 @@ const char* const kRenderHelp =
     "\n"
     "output:\n"
     "  -o, --output FILE.exr    OpenEXR output (required). Every output path is checked before the\n"
-    "                           render; the files are written to temporary names and renamed\n"
-    "                           together, so a failure leaves earlier files untouched\n"
+    "                           render; the files are written to temporary names and renamed only\n"
+    "                           once all are written, so a failed write leaves existing files as\n"
+    "                           they were\n"
     "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
@@ -155,10 +156,6 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     }
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
     if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
-    if (o.spp && *o.spp > 1 && (o.spd || o.adaptiveThreshold.value_or(0) > 0))
-        throw UsageError(std::string("--spp cannot be combined with ") +
-                         (o.spd ? "--spd" : "--adaptive") +
-                         ", which samples pixel corners instead");
     // Two names for one file would make one output overwrite another, or the scene.
     const std::pair<const char*, const std::string*> names[] = {
         {"the scene", &cli.scene}, {"-o", &cli.exr}, {"--png", &cli.png}, {"--stats", &cli.stats}};
@@ -214,6 +211,12 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     stats.parseSeconds = secondsSince(t0);
 
     const RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    // Checked after the scene's own "render" block is merged: it may be the
+    // one that turns adaptive sampling on.
+    if (cli.overrides.spp && *cli.overrides.spp > 1 && (options.spd || options.adaptiveThreshold > 0))
+        throw UsageError(std::string("--spp cannot be combined with ") +
+                         (options.spd ? "--spd" : "adaptive supersampling (--adaptive or the scene's \"adaptive\")") +
+                         ", which samples pixel corners instead");
     checkMemoryBudget(scene, options);
     applyPrecision(scene, options.precision);
     // Every frame's camera is checked before the first frame renders.

@@ -3,16 +3,20 @@
 // that fights self-intersection ("acne"); call sites never invent epsilons.
 //
 // Robust (default): move the origin off the surface along the geometric
-// normal, towards the side the new ray leaves into, by 32 float ulps of the
-// largest coordinate of the primitive that was hit, and start at t = 0.
-// Embree stores triangles in float relative to `reference` (normally the
-// eye), so a triangle's float copy is off by ulps of its vertices, bounded by
-// |p - reference| + span (span: the triangle's extent around p); analytic
-// shapes intersect in double (span 0) or, in float precision, relative to
-// themselves (span: the shape's size). No absolute floor: a scene scaled by
-// 1e-6 or 1e4 renders the same image (tests/render/test_scale_invariance).
-// This is the Embree-tutorial strategy (NUMERICS.md §3.2 (b)): 0% false
-// self-shadowing at any scene scale and position.
+// normal, towards the side the new ray leaves into, and start at t = 0. The
+// distance is 32 float ulps of the largest float coordinate involved plus 4
+// double ulps of the largest absolute coordinate of p:
+//  - Embree stores triangles in float relative to `reference` (normally the
+//    eye), so a triangle's float copy is off by ulps of its vertices, bounded
+//    by |p - reference| + span (span: the triangle's extent around p);
+//  - float-precision shapes work relative to a point of their own (span: the
+//    distance from p to the centre of the shape's bounds);
+//  - double-precision shapes have span 0; their error is ulps of |p|.
+// No absolute length: a scene scaled by 2^-20 .. 2^14 renders bit-identical
+// images (tests/numerics/test_whole_renders.cpp). This is the Embree-tutorial
+// strategy (NUMERICS.md §3.2 (b)): 0% false self-shadowing at any scene scale
+// and position. What it cannot cover: a hit within ~1e-9 of a double shape's
+// size from the reference point itself (the eye on the surface).
 // FixedEpsilon: the lecture's t > epsilon with the origin left on the surface.
 
 #include "geometry/ray.h"
@@ -26,9 +30,6 @@ struct SpawnSettings {
     OffsetMode mode = OffsetMode::Robust;
     double epsilon = 1e-4;  ///< FixedEpsilon only: the lecture's t > epsilon
     Vec3 reference{0, 0, 0};  ///< point the float geometry is relative to (the eye)
-    /// Smallest magnitude the offset is scaled to, for hits at the reference
-    /// itself; the renderer sets 1e-9 of the scene's size (scale-free).
-    double minMagnitude = 0;
 };
 
 struct SpawnedRay {

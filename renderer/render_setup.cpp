@@ -49,14 +49,13 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
     r.maxDepth = scene.image.maxDepth;
     apply(r, scene.settings);
     apply(r, o);
+    // Adaptive supersampling and the SPD procedure trace pixel corners, not
+    // spp samples per pixel: record what is done (EXR header, statistics).
+    if (r.spd || r.adaptiveThreshold > 0) r.spp = 1;
     // Geometry goes to Embree in float relative to the eye (camera-relative
     // rendering), and secondary-ray offsets are scaled in the same frame.
     r.accelOptions.origin = scene.camera.frame().eye;
     r.spawn.reference = scene.camera.frame().eye;
-    // A hit at the eye itself still gets an offset, scaled to the scene
-    // (never an absolute length, which would break tiny scenes).
-    const Bounds3 b = scene.bounds();
-    if (!b.empty() && b.finite()) r.spawn.minMagnitude = 1e-9 * maxComponent(b.extent());
     return r;
 }
 

@@ -112,8 +112,10 @@ SurfaceInteraction Scene::surfaceAt(const Ray& ray, const Hit& hit) const {
         si.ng = g.ng;
         si.ns = g.ns;
         si.frontFace = g.frontFace;
+        // Float-precision shapes solve relative to a point of their own (centre,
+        // base, plane point), which lies within their bounds.
         if (object.shape->precision() == Precision::Float)
-            si.span = maxComponent(object.shape->bounds().extent());
+            si.span = maxComponent(abs(si.p - object.shape->bounds().centre()));
     }
     si.object = hit.object;
     si.material = object.materialOf(hit.prim);

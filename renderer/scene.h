@@ -61,8 +61,8 @@ struct SurfaceInteraction {
     bool frontFace = true;
     /// Extent around p of the primitive's float-rounded geometry, which sizes
     /// the secondary-ray offset (geometry/spawn.h): a triangle's largest
-    /// vertex distance from p, a float-precision shape's size, 0 for shapes
-    /// intersected in double.
+    /// vertex distance from p, a float-precision shape's distance from p to
+    /// its bounds' centre, 0 for shapes intersected in double.
     double span = 0;
     uint32_t object = 0;
     uint32_t material = 0;

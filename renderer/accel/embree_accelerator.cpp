@@ -356,10 +356,12 @@ void EmbreeAccelerator::addMesh(const Object& object, uint32_t objectIndex,
 }
 
 bool EmbreeAccelerator::toEmbreeRay(const Ray& ray, double tMin, double tMax, RTCRay& out) const {
-    if (!(tMin < tMax) || !isFinite(ray.o) || !isFinite(ray.d)) return false;
+    if (!(tMin < tMax)) return false;
     const Vec3 o = ray.o - m_origin;
     const Vec3f of{toFloat(o.x), toFloat(o.y), toFloat(o.z)};
     const Vec3f df{toFloat(ray.d.x), toFloat(ray.d.y), toFloat(ray.d.z)};
+    // One test for everything: a NaN or infinite double, and one beyond
+    // float range, all convert to a non-finite float.
     if (!isFinite(of) || !isFinite(df) || df == Vec3f{0, 0, 0}) return false;
 
     out.org_x = of.x;

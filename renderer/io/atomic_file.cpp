@@ -72,20 +72,26 @@ AtomicFileGroup::Staged createTemp(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError(path, 0, "cannot write file: it is a directory");
-    const std::string tmp = tempNameFor(path);
-    // Register before the file exists so there is no window in which an
-    // interrupt leaves an unregistered temporary behind.
-    const int slot = registerTemp(tmp);
-    // Creating the file here (rather than leaving it to the writer) gives a
-    // clear error naming the target when its directory is missing or read-only.
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) {
+    // A temporary left by a killed run (SIGKILL, OOM) may carry the name this
+    // process would pick (same pid in a fresh container, counter from 0): the
+    // next name is tried instead of failing after the render.
+    for (int attempt = 0;; ++attempt) {
+        const std::string tmp = tempNameFor(path);
+        // Register before the file exists so there is no window in which an
+        // interrupt leaves an unregistered temporary behind.
+        const int slot = registerTemp(tmp);
+        // Creating the file here (rather than leaving it to the writer) gives a
+        // clear error naming the target when its directory is missing or read-only.
+        const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            return {path, tmp, slot};
+        }
         const int err = errno;
         unregisterTemp(slot);
-        throw InputError(path, 0, std::string("cannot write file: ") + std::strerror(err));
+        if (err != EEXIST || attempt >= 1000)
+            throw InputError(path, 0, std::string("cannot write file: ") + std::strerror(err));
     }
-    ::close(fd);
-    return {path, tmp, slot};
 }
 
 }  // namespace

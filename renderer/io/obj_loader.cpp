@@ -281,12 +281,15 @@ int lineOfStatement(const std::string& text, const std::string& kw, size_t index
     return found;
 }
 
-/// Line of the first statement `kw` whose arguments contain `arg`, or 0.
+/// Line of the first statement `kw` with `arg` among its blank-separated
+/// arguments, or 0.
 int lineOfStatementWith(const std::string& text, const std::string& kw, const std::string& arg) {
     int found = 0;
     forEachStatement(text, [&](const std::string& k, const char* rest, const char* eol, int line) {
-        if (found == 0 && k == kw && std::string(rest, eol).find(arg) != std::string::npos)
-            found = line;
+        if (found != 0 || k != kw) return;
+        std::istringstream args(std::string(rest, eol));
+        for (std::string token; args >> token;)
+            if (token == arg) found = line;
     });
     return found;
 }
@@ -305,27 +308,29 @@ std::string between(const std::string& s, const std::string& open, const std::st
     return v;
 }
 
-/// tinyobjloader's warnings, reworded with the line they are about. It
-/// reports one missing library three ways ("Material file [ x ] not found",
+/// tinyobjloader's warnings, reworded with the line they are about. When no
+/// library loads it reports that three ways ("Material file [ x ] not found",
 /// "Failed to load material file(s)", then "material [ 'm' ] not found" for
-/// every usemtl); the user gets one line for it, at its mtllib statement.
+/// every usemtl); the user gets one line per missing library, at its mtllib
+/// statement. When another library did load, undefined names are still
+/// reported.
 void addTinyObjWarnings(const std::vector<std::string>& messages, const std::string& text,
                         Warnings& warn) {
-    bool libraryMissing = false;
+    bool noLibraryLoaded = false;
     for (const std::string& m : messages) {
         if (m.rfind("Material file [", 0) == 0) {
             const std::string name = between(m, "[", "]");
             warn.add("material library '" + name +
                          "' not found beside the OBJ; its materials get the default material",
                      lineOfStatementWith(text, "mtllib", name));
-            libraryMissing = true;
         }
+        if (m.rfind("Failed to load material file", 0) == 0) noLibraryLoaded = true;
     }
     for (const std::string& m : messages) {
         if (m.rfind("Material file [", 0) == 0 || m.rfind("Failed to load material file", 0) == 0)
             continue;
         if (m.rfind("material [", 0) == 0 && m.find("not found") != std::string::npos) {
-            if (libraryMissing) continue;  // a consequence of the missing library
+            if (noLibraryLoaded) continue;  // a consequence of the missing library
             const std::string name = between(m, "[", "]");
             warn.add("material '" + name + "' is not defined in the MTL libraries; the default "
                      "material is used", lineOfStatementWith(text, "usemtl", name));

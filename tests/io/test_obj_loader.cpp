@@ -232,6 +232,19 @@ TEST_CASE("obj: a material the MTL does not define is one warning at its first u
     REQUIRE(m.warnings.size() == 1);
     CHECK(m.warnings[0] == path + ":7: material 'blue' is not defined in the MTL libraries; the "
                            "default material is used (2 times)");
+
+    // Whole names: 'bl' is reported at its own usemtl, not at 'blue'. The
+    // first of two libraries is missing, the second loads: both the missing
+    // library and the undefined name are reported.
+    const std::string two = dir.write("two.obj",
+                                      "mtllib gone.mtl lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                      "usemtl blue\nf 1 2 3\nusemtl bl\nf 1 3 2\n");
+    const ObjModel t = loadObj(two, quiet());
+    REQUIRE(t.warnings.size() == 3);
+    CHECK(t.warnings[0] == two + ":1: material library 'gone.mtl' not found beside the OBJ; its "
+                               "materials get the default material");
+    CHECK(t.warnings[1].rfind(two + ":5: material 'blue'", 0) == 0);
+    CHECK(t.warnings[2].rfind(two + ":7: material 'bl'", 0) == 0);
 }
 
 TEST_CASE("obj: bad face indices are errors with the face's line") {

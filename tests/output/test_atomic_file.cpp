@@ -189,3 +189,20 @@ TEST_CASE("atomic file: checkWritable refuses missing folders and directories, t
     CHECK(dir.entries() == std::vector<std::string>{"folder.exr", "old.exr"});
     CHECK(inFlightTempFileCount() == 0);
 }
+
+TEST_CASE("atomic file: a temporary left by a killed run does not block the next write") {
+    TempDir dir;
+    const std::string target = dir.file("out.exr");
+    // Occupy the next few temporary names this process would choose, as a run
+    // killed with the same pid would have left them.
+    std::string probe;
+    writeFileAtomically(target, [&](const std::string& tmp) { probe = tmp; });
+    const std::string stem = probe.substr(0, probe.rfind('.') + 1);
+    const unsigned long next = std::stoul(probe.substr(probe.rfind('.') + 1)) + 1;
+    for (unsigned long k = next; k < next + 3; ++k)
+        std::ofstream(stem + std::to_string(k)) << "stale";
+    writeFileAtomically(target, std::string("fresh"));
+    CHECK(readBytes(target) == "fresh");
+    CHECK(dir.entries().size() == 4);  // out.exr and the three stale files, untouched
+    CHECK(inFlightTempFileCount() == 0);
+}

@@ -159,6 +159,19 @@ TEST_CASE("command line: outputs naming one file, the scene, or the wrong format
                  dir, {"scene.json"}, 2, "", ".png");
 }
 
+TEST_CASE("command line: --spp with the scene's own adaptive sampling is a usage error") {
+    Scratch dir;
+    std::string text = kScene;
+    text.insert(text.rfind('}'), ",\n \"render\": {\"adaptive\": 0.1}");
+    const std::string scene = dir.write("scene.json", text);
+    checkRefused(runRaylab({"render", scene, "-o", dir.file("out.exr"), "--spp", "4", "--quiet"}),
+                 dir, {"scene.json"}, 2, "", "--spp");
+    // Without --spp it renders (adaptive, corner rays).
+    const RunResult ok = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", "8",
+                                    "--height", "8", "--quiet"});
+    CHECK(ok.exitCode == 0);
+}
+
 TEST_CASE("command line: --width 65536 --height 65536 is refused by the memory guard") {
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
     // 65536^2 pixels x 48 floats of film and encoder copies: about 824 GB.
