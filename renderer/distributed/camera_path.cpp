@@ -13,15 +13,6 @@ namespace raylab {
 
 namespace {
 
-/// User text quoted in a message: at most 40 bytes, control bytes shown as
-/// '?', so an error stays one readable line whatever was typed.
-std::string shown(const std::string& text) {
-    std::string s = text.substr(0, 40);
-    for (char& c : s)
-        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-    return text.size() > 40 ? s + "..." : s;
-}
-
 std::string fmt(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.10g", v);
@@ -157,7 +148,7 @@ CameraPath parseCameraPath(const JsonValue& value, const std::string& file, doub
             interpolation = CameraPath::Interpolation::Linear;
         else if (v->asString() != "catmull_rom")
             rd.fail(*v, p,
-                    "must be one of 'linear', 'catmull_rom' (got '" + shown(v->asString()) + "')");
+                    "must be one of 'linear', 'catmull_rom' (got '" + terminalSafe(v->asString(), 40) + "')");
     }
 
     const JsonValue& list = rd.need(value, path, "keyframes");

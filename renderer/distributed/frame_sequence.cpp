@@ -8,15 +8,6 @@ namespace raylab {
 
 namespace {
 
-/// User text quoted in a message: at most 40 bytes, control bytes shown as
-/// '?', so an error stays one readable line whatever was typed.
-std::string shown(const std::string& text) {
-    std::string s = text.substr(0, 40);
-    for (char& c : s)
-        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-    return text.size() > 40 ? s + "..." : s;
-}
-
 /// A decimal integer in [0, kMaxFrame] filling all of `s`, or -1.
 int frameNumber(const std::string& s) {
     if (s.empty() || s.size() > 7) return -1;
@@ -36,7 +27,7 @@ FrameRange parseFrameRange(const std::string& text) {
     const int b = colon == std::string::npos ? a : frameNumber(text.substr(colon + 1));
     if (a < 0 || b < 0 || a > b)
         throw UsageError("--frames: expected FIRST:LAST with 0 <= FIRST <= LAST <= " +
-                         std::to_string(kMaxFrame) + " (got '" + shown(text) + "')");
+                         std::to_string(kMaxFrame) + " (got '" + terminalSafe(text, 40) + "')");
     return {a, b};
 }
 

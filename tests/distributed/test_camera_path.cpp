@@ -143,10 +143,10 @@ TEST_CASE("parseFrameRange") {
     CHECK_THROWS_WITH(parseFrameRange("3:1"),
                       "--frames: expected FIRST:LAST with 0 <= FIRST <= LAST <= 9999999 (got "
                       "'3:1')");
-    // Typed text is echoed as one short readable line: control bytes as '?', 40 bytes at most.
+    // Typed text is echoed as one short readable line: control bytes as \xNN, 40 bytes at most.
     CHECK_THROWS_WITH(parseFrameRange("1:\x1b[2J" + std::string(100, '9')),
                       ("--frames: expected FIRST:LAST with 0 <= FIRST <= LAST <= 9999999 (got "
-                       "'1:?[2J" + std::string(34, '9') + "...')").c_str());  // 6 + 34 = 40 bytes
+                       "'1:\\x1b[2J" + std::string(31, '9') + "...')").c_str());  // 9 + 31 = 40 bytes
 }
 
 TEST_CASE("sequenceFileName: _NNNN before the extension of the file name") {
