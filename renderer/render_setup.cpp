@@ -1,7 +1,5 @@
 #include "renderer/render_setup.h"
 
-#include <unistd.h>
-
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -67,23 +65,26 @@ MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives) {
 }
 
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options) {
+    checkMemoryBudget(scene, options, tightestMemoryLimit(readMemoryFacts()));
+}
+
+void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
+                       const std::optional<MemoryLimit>& limit) {
     const size_t primitives = scene.primitiveCount();
     const MemoryEstimate e = estimateRenderMemory(options.width, options.height, primitives);
-    const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    if (available > 0 && e.total() > 0.8 * available) {
-        const auto mib = [](double bytes) { return std::to_string(int64_t(bytes / (1 << 20))); };
-        const std::string image =
-            "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";
-        const std::string what =
-            e.accelBytes < 0.01 * e.total()
-                ? image + " needs about " + mib(e.total()) + " MiB"
-                : image + " of " + std::to_string(primitives) + " primitives needs about " +
-                      mib(e.total()) + " MiB (film " + mib(e.filmBytes) +
-                      " MiB, acceleration structure " + mib(e.accelBytes) + " MiB)";
-        throw InputError(scene.sourcePath, 0,
-                         what + ", more than this machine's memory allows (" + mib(available) +
-                             " MiB)");
-    }
+    if (!limit || e.total() <= limit->bytes) return;
+    const auto mib = [](double bytes) { return std::to_string(int64_t(bytes / (1 << 20))); };
+    const std::string image =
+        "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";
+    const std::string what =
+        e.accelBytes < 0.01 * e.total()
+            ? image + " needs about " + mib(e.total()) + " MiB"
+            : image + " of " + std::to_string(primitives) + " primitives needs about " +
+                  mib(e.total()) + " MiB (film " + mib(e.filmBytes) +
+                  " MiB, acceleration structure " + mib(e.accelBytes) + " MiB)";
+    throw InputError(scene.sourcePath, 0,
+                     what + ", more than the " + mib(limit->bytes) + " MiB that " + limit->source +
+                         " allows");
 }
 
 void applyPrecision(Scene& scene, Precision precision) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "renderer/memory_limit.h"
 #include "renderer/render_options.h"
 #include "renderer/render_overrides.h"
 #include "renderer/scene.h"
@@ -31,9 +32,14 @@ struct MemoryEstimate {
 MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives);
 
 /// Refuses (InputError) a render whose film and acceleration structure would
-/// not fit in 80% of the machine's memory, before either is allocated, instead
-/// of letting the OOM killer end it half-way.
+/// not fit in what this process may still allocate (tightestMemoryLimit:
+/// physical memory, MemAvailable, cgroup limit, ulimit -v), before either is
+/// allocated, instead of letting the OOM killer end it half-way.
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options);
+
+/// The same against a given limit (nullopt: nothing known, nothing refused).
+void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
+                       const std::optional<MemoryLimit>& limit);
 
 /// Sets the arithmetic of every analytic shape.
 void applyPrecision(Scene& scene, Precision precision);

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "renderer/io/errors.h"
@@ -66,12 +67,38 @@ std::string tempNameFor(const std::string& path) {
     throw InputError(path, 0, "cannot write file: " + reason);
 }
 
+/// The file that writing `path` must replace. A symbolic link is followed
+/// (renaming over the link itself would turn it into a plain file and leave
+/// the file it points to stale), relative links against the link's own
+/// directory. Anything but a regular file or a new name is refused: renaming
+/// over a device such as /dev/full or /dev/null, a FIFO or a socket would
+/// replace the node itself, and a directory cannot be replaced.
+std::string resolveOutputTarget(const std::string& path) {
+    namespace fs = std::filesystem;
+    fs::path target = path;
+    for (int hops = 0;; ++hops) {
+        struct stat st {};
+        if (::lstat(target.c_str(), &st) != 0) return target.string();  // a new file
+        if (S_ISREG(st.st_mode)) return target.string();
+        if (S_ISDIR(st.st_mode)) throw InputError(path, 0, "cannot write file: it is a directory");
+        if (!S_ISLNK(st.st_mode))
+            throw InputError(path, 0,
+                             "cannot write file: not a regular file (a device, FIFO or socket); "
+                             "raylab replaces its outputs as a whole");
+        if (hops >= 40)  // the kernel's own limit (ELOOP)
+            throw InputError(path, 0, "cannot write file: too many levels of symbolic links");
+        std::error_code ec;
+        const fs::path link = fs::read_symlink(target, ec);
+        if (ec) throw InputError(path, 0, "cannot write file: " + ec.message());
+        target = link.is_absolute() ? link : target.parent_path() / link;
+    }
+}
+
 /// Creates the (empty) temporary for `path` and registers it; the caller owns both.
-AtomicFileGroup::Staged createTemp(const std::string& path) {
-    if (path.empty()) throw InputError("cannot write file: empty output path");
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(path, 0, "cannot write file: it is a directory");
+/// The staged path is the resolved target (see resolveOutputTarget).
+AtomicFileGroup::Staged createTemp(const std::string& requested) {
+    if (requested.empty()) throw InputError("cannot write file: empty output path");
+    const std::string path = resolveOutputTarget(requested);
     // A temporary left by a killed run (SIGKILL, OOM) may carry the name this
     // process would pick (same pid in a fresh container, counter from 0): the
     // next name is tried instead of failing after the render.
@@ -90,7 +117,7 @@ AtomicFileGroup::Staged createTemp(const std::string& path) {
         const int err = errno;
         unregisterTemp(slot);
         if (err != EEXIST || attempt >= 1000)
-            throw InputError(path, 0, std::string("cannot write file: ") + std::strerror(err));
+            throw InputError(requested, 0, std::string("cannot write file: ") + std::strerror(err));
     }
 }
 

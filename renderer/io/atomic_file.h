@@ -47,7 +47,10 @@ private:
 ///
 /// Creates "<path>.tmp.<pid>.<n>" in the same directory (so the final rename
 /// never crosses a file system), calls `writer(tmpPath)` to fill it, then
-/// renames it over `path`. While the write is in progress the temporary name
+/// renames it over `path`. A symbolic link is followed: the file it points to
+/// is replaced and the link stays. A `path` that names a directory, device,
+/// FIFO or socket is refused before anything is written (renaming over it
+/// would replace the node). While the write is in progress the temporary name
 /// is recorded so removeInFlightTempFiles() can delete it from a signal handler.
 /// \param path   the final file name
 /// \param writer fills the file named by its argument (it may reopen and
@@ -67,7 +70,8 @@ void writeFileAtomically(const std::string& path, const std::string& contents,
                          AtomicFileGroup* group = nullptr);
 
 /// \brief Fails early, before a long render, when `path` cannot be written:
-/// its directory is missing or read-only, or `path` is a directory. Creates
+/// its directory is missing or read-only, or `path` is a directory, device,
+/// FIFO or socket (symbolic links are followed). Creates
 /// and removes a temporary beside it; `path` itself is not touched.
 /// \throws InputError(path, 0, "cannot write file: reason")
 void checkWritable(const std::string& path);

@@ -4,6 +4,9 @@
 
 #include <tiny_obj_loader.h>
 
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -238,20 +241,28 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
     return bad;
 }
 
-/// Finds the first v/vn/vt line with a coordinate that is not a finite
-/// number. tinyobjloader reads "nan", "inf" and words it cannot parse as 0
-/// without a word, which would silently make a different mesh.
+/// Finds the first statement among `keywords` with an argument that is not a
+/// finite number. tinyobjloader reads "nan", "inf" and words it cannot parse
+/// as 0 without a word, which would silently make a different mesh or
+/// material. `skipWords` are allowed first arguments that introduce a
+/// non-numeric form (MTL "Kd spectral file.rfl", "Kd xyz 1 1 1").
 /// Returns {line, message} or {0, ""}.
-std::pair<int, std::string> findBadCoordinate(const std::string& text) {
+std::pair<int, std::string> findBadNumber(const std::string& text,
+                                          std::initializer_list<const char*> keywords,
+                                          std::initializer_list<const char*> skipWords = {}) {
     std::pair<int, std::string> bad{0, ""};
     forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
-        if (bad.first > 0 || (kw != "v" && kw != "vn" && kw != "vt")) return;
-        // A '#' starts a comment, also after the coordinates.
+        if (bad.first > 0) return;
+        bool numeric = false;
+        for (const char* k : keywords) numeric = numeric || kw == k;
+        if (!numeric) return;
+        // A '#' starts a comment, also after the numbers.
         for (const char* c = q; c < eol; ++c)
             if (*c == '#') {
                 eol = c;
                 break;
             }
+        bool first = true;
         while (true) {
             while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
             if (q >= eol) break;
@@ -259,10 +270,14 @@ std::pair<int, std::string> findBadCoordinate(const std::string& text) {
             while (te < eol && *te != ' ' && *te != '\t' && *te != '\r') ++te;
             const std::string token(q, te);
             q = te;
+            if (first)
+                for (const char* w : skipWords)
+                    if (token == w) return;
+            first = false;
             char* end = nullptr;
             const double x = std::strtod(token.c_str(), &end);
             if (end != token.c_str() + token.size() || !std::isfinite(x)) {
-                bad = {line, "'" + kw + "': coordinate '" + token.substr(0, 40) +
+                bad = {line, "'" + kw + "': '" + token.substr(0, 40) +
                                  "' is not a finite number"};
                 return;
             }
@@ -336,14 +351,93 @@ void addTinyObjWarnings(const std::vector<std::string>& messages, const std::str
                      "material is used", lineOfStatementWith(text, "usemtl", name));
             continue;
         }
-        warn.add(m);
+        // Anything else is passed on, at the line tinyobjloader names in it.
+        const int line = lineInMessage(m);
+        const size_t at = m.find(" (line ");
+        warn.add(line > 0 && at != std::string::npos ? m.substr(0, at) : m, line);
     }
 }
+
+/// Reads the MTL libraries an OBJ names, in place of tinyobjloader's
+/// MaterialFileReader: through readTextFile, so a device, FIFO or huge file
+/// is refused instead of read without end; relative to the OBJ's directory
+/// (absolute names stay absolute); with NaN/Inf values refused at their line;
+/// and keeping each library's text so a bad material is reported at the line
+/// that makes it bad.
+class MtlLibraryReader : public tinyobj::MaterialReader {
+public:
+    struct Library {
+        std::string path, text;
+        size_t firstMaterial = 0, endMaterial = 0;  ///< [first, end) in the material list
+    };
+
+    explicit MtlLibraryReader(std::string objPath) : m_objPath(std::move(objPath)) {}
+
+    bool operator()(const std::string& matId, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* matMap, std::string* warn,
+                    std::string* err) override {
+        const std::string path = resolveRelativeTo(m_objPath, matId);
+        struct stat st {};
+        // Only a library that is not there is a warning (the render goes on
+        // with the default material); one that is there but cannot be read
+        // is an error naming it.
+        if (::stat(path.c_str(), &st) != 0 && (errno == ENOENT || errno == ENOTDIR)) {
+            if (warn) *warn += "Material file [ " + matId + " ] not found\n";
+            return false;
+        }
+        Library lib;
+        lib.path = path;
+        lib.text = readTextFile(path);
+        if (const auto [line, message] =
+                findBadNumber(lib.text, {"Ka", "Kd", "Ks", "Ke", "Tf", "Ns", "Ni", "d", "Tr", "illum"},
+                              {"spectral", "xyz"});
+            line > 0)
+            throw InputError(path, line, message);
+        lib.firstMaterial = materials->size();
+        std::istringstream in(lib.text);
+        tinyobj::LoadMtl(matMap, materials, &in, warn, err);
+        lib.endMaterial = materials->size();
+        m_libraries.push_back(std::move(lib));
+        return true;
+    }
+
+    /// "FILE:LINE" of the statement `keyword` inside material `index`'s block
+    /// (the `newmtl` line when the block has none), for errors about it.
+    std::pair<std::string, int> locate(size_t index, const std::string& name,
+                                       const std::string& keyword) const {
+        for (const Library& lib : m_libraries) {
+            if (index < lib.firstMaterial || index >= lib.endMaterial) continue;
+            int newmtl = 0, found = 0;
+            forEachStatement(lib.text, [&](const std::string& k, const char* rest,
+                                           const char* eol, int line) {
+                if (found) return;
+                if (k == "newmtl") {
+                    if (newmtl) {
+                        found = newmtl;  // the block ended without `keyword`
+                        return;
+                    }
+                    std::istringstream args(std::string(rest, eol));
+                    std::string n;
+                    if (args >> n && n == name) newmtl = line;
+                } else if (newmtl && k == keyword) {
+                    found = line;
+                }
+            });
+            return {lib.path, found ? found : newmtl};
+        }
+        return {m_objPath, 0};
+    }
+
+private:
+    std::string m_objPath;
+    std::vector<Library> m_libraries;
+};
 
 Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
 
 /// The MTL -> Whitted mapping documented in obj_loader.h.
-Material materialFromMtl(const tinyobj::material_t& m, const std::string& path, Warnings& warn) {
+Material materialFromMtl(const tinyobj::material_t& m, size_t index,
+                         const MtlLibraryReader& libraries, Warnings& warn) {
     Material out;
     out.name = m.name;
     out.ka = colorOf(m.ambient);
@@ -371,13 +465,18 @@ Material materialFromMtl(const tinyobj::material_t& m, const std::string& path, 
         !m.ambient_texname.empty() || !m.alpha_texname.empty())
         warn.add("material '" + m.name + "': texture maps are not supported and are ignored");
 
-    for (const Color* c : {&out.ka, &out.kd, &out.ks, &out.km, &out.kt})
+    const auto refuse = [&](const std::string& keyword, const std::string& what) {
+        const auto [file, line] = libraries.locate(index, m.name, keyword);
+        return InputError(file, line, "material '" + m.name + "': " + what);
+    };
+    const std::pair<const Color*, const char*> colours[] = {
+        {&out.ka, "Ka"}, {&out.kd, "Kd"}, {&out.ks, "Ks"}, {&out.km, "Ks"}, {&out.kt, "Tf"}};
+    for (const auto& [c, keyword] : colours)
         if (!c->isFinite() || c->r < 0 || c->g < 0 || c->b < 0)
-            throw InputError(path, 0, "material '" + m.name + "': colours must be finite and >= 0");
+            throw refuse(keyword, std::string(keyword) + ": colours must be finite and >= 0");
     if (!(out.shininess >= 0 && std::isfinite(out.shininess)))
-        throw InputError(path, 0, "material '" + m.name + "': Ns must be finite and >= 0");
-    if (!std::isfinite(out.ior))
-        throw InputError(path, 0, "material '" + m.name + "': Ni must be finite");
+        throw refuse("Ns", "Ns must be finite and >= 0");
+    if (!std::isfinite(out.ior)) throw refuse("Ni", "Ni must be finite");
     return out;
 }
 
@@ -413,7 +512,7 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     // line) and may read out of bounds first; check them here with the real line.
     if (const auto [line, message] = findBadFaceIndex(text); line > 0)
         throw InputError(path, line, message);
-    if (const auto [line, message] = findBadCoordinate(text); line > 0)
+    if (const auto [line, message] = findBadNumber(text, {"v", "vn", "vt"}); line > 0)
         throw InputError(path, line, message);
 
     tinyobj::attrib_t attrib;
@@ -422,7 +521,7 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     std::string warnText, errText;
     std::istringstream stream(text);
     // MTL libraries are looked up beside the OBJ ("" = current directory).
-    tinyobj::MaterialFileReader mtlReader(directoryOf(path));
+    MtlLibraryReader mtlReader(path);
     const bool ok = tinyobj::LoadObj(&attrib, &shapes, &mtls, &warnText, &errText, &stream,
                                      &mtlReader, /*triangulate=*/true,
                                      /*default_vcols_fallback=*/false);
@@ -454,8 +553,8 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
                                  "vertex " + std::to_string(i + 1) + " is not finite");
 
     ObjModel model;
-    for (const tinyobj::material_t& m : mtls)
-        model.materials.push_back(materialFromMtl(m, path, warn));
+    for (size_t i = 0; i < mtls.size(); ++i)
+        model.materials.push_back(materialFromMtl(mtls[i], i, mtlReader, warn));
     const uint32_t mtlCount = uint32_t(model.materials.size());
     bool needDefault = false;
 

@@ -1,33 +1,58 @@
 #include "renderer/io/text_file.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
 #include "renderer/io/errors.h"
 
 namespace raylab {
 
-std::string readTextFile(const std::string& path) {
-    // stat first: fopen succeeds on a directory on Linux and only the read fails,
-    // with a less helpful message.
+std::string readTextFile(const std::string& path, size_t maxBytes) {
+    // O_NONBLOCK: opening a FIFO with no writer would otherwise wait for ever
+    // (and not even SIGINT ends an open(2) blocked there). The file is refused
+    // below unless it is a regular one, so the flag never affects a read.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
+    if (::fstat(fd, &st) != 0)
         throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
     if (S_ISDIR(st.st_mode)) throw InputError(path, 0, "cannot open: is a directory");
-
-    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    // A device (/dev/zero, /dev/urandom), FIFO or socket has no end that can be
+    // trusted: reading it would take unbounded time and memory.
+    if (!S_ISREG(st.st_mode))
+        throw InputError(path, 0, "cannot open: not a regular file (a device, FIFO or socket)");
+    const auto tooLarge = [&](double bytes) {
+        const auto mib = [](double b) { return std::to_string(int64_t(b / (1 << 20))); };
+        return InputError(path, 0, "file is " + mib(bytes) + " MiB, larger than the " +
+                                       mib(double(maxBytes)) + " MiB a scene file may have");
+    };
+    if (uint64_t(st.st_size) > maxBytes) throw tooLarge(double(st.st_size));
 
     std::string text;
+    text.reserve(size_t(st.st_size));
     char buffer[1 << 16];
-    size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-    if (std::ferror(file.get()))
-        throw InputError(path, 0, std::string("read error: ") + std::strerror(errno));
+    while (true) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw InputError(path, 0, std::string("read error: ") + std::strerror(errno));
+        }
+        // A file that grows while it is read (or reports size 0, as /proc
+        // files do) is held to the same limit.
+        if (text.size() + size_t(n) > maxBytes) throw tooLarge(double(text.size() + size_t(n)));
+        text.append(buffer, size_t(n));
+    }
     return text;
 }
 

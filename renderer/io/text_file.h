@@ -1,15 +1,22 @@
 #pragma once
 // Whole-file reading for the scene readers, with errors that name the file.
 
+#include <cstddef>
 #include <string>
 
 namespace raylab {
 
+/// The largest scene, mesh or material file raylab reads (1 GiB): bigger
+/// files are refused before they are read rather than exhausting memory.
+constexpr size_t kMaxTextFileBytes = size_t(1) << 30;
+
 /// Reads the whole file at `path` as bytes (no newline translation).
 /// Throws InputError(path, 0, "cannot open: <reason>") when the file is
-/// missing, unreadable or a directory, and "read error: <reason>" when
-/// reading fails midway.
-std::string readTextFile(const std::string& path);
+/// missing, unreadable, a directory or not a regular file (a device such as
+/// /dev/zero, a FIFO, a socket: never opened blocking, never read without
+/// end), "file is N MiB, larger than ..." beyond `maxBytes`, and
+/// "read error: <reason>" when reading fails midway.
+std::string readTextFile(const std::string& path, size_t maxBytes = kMaxTextFileBytes);
 
 /// The directory part of `path` including the trailing '/', or "" when the
 /// path has no directory ("scene.json" -> "", "a/b.json" -> "a/").

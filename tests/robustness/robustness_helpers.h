@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -99,8 +100,12 @@ inline bool contains(const std::string& s, const std::string& part) {
 /// stderr to files), for tests that signal it or bound its run time.
 class Process {
 public:
+    /// `addressSpaceLimit` > 0 runs raylab under that RLIMIT_AS (`ulimit -v`), in bytes.
     Process(const std::vector<std::string>& args, const std::string& outFile,
-            const std::string& errFile) {
+            const std::string& errFile, double addressSpaceLimit = 0) {
+        struct rlimit as {};
+        ::getrlimit(RLIMIT_AS, &as);
+        if (addressSpaceLimit > 0) as.rlim_cur = rlim_t(addressSpaceLimit);
         std::vector<std::string> all{RAYLAB_BINARY};
         all.insert(all.end(), args.begin(), args.end());
         std::vector<char*> argv;
@@ -121,6 +126,7 @@ public:
             for (int sig : {SIGINT, SIGTERM, SIGSEGV, SIGABRT, SIGFPE, SIGILL, SIGBUS})
                 ::signal(sig, SIG_DFL);
             ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+            if (addressSpaceLimit > 0 && ::setrlimit(RLIMIT_AS, &as) != 0) ::_exit(125);
             const int in = ::open("/dev/null", O_RDONLY);
             const int out = ::open(outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -187,11 +193,12 @@ struct RunResult {
 
 /// Runs `raylab ARGS` with a deadline; a process still running after
 /// `timeoutSeconds` is killed and reported as timed out.
-inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutSeconds = 60) {
+inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutSeconds = 60,
+                           double addressSpaceLimit = 0) {
     const Scratch io;
     RunResult r;
     {
-        Process p(args, io.file("stdout"), io.file("stderr"));
+        Process p(args, io.file("stdout"), io.file("stderr"), addressSpaceLimit);
         REQUIRE(p.started());
         if (p.wait(timeoutSeconds)) {
             r.exitCode = p.exitCode();

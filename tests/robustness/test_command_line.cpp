@@ -3,6 +3,8 @@
 // an existing output file is never replaced by a failed or partial render.
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+
 #include <string>
 #include <vector>
 
@@ -98,6 +100,75 @@ TEST_CASE("command line: unwritable outputs fail with one line and leave no temp
     CHECK(lines(stats.err).size() == 1);
     CHECK(startsWith(stats.err, "raylab: error: " + dir.file("no/dir/s.json") + ":"));
     for (const std::string& f : dir.files()) CHECK_FALSE(contains(f, ".tmp."));
+}
+
+TEST_CASE("command line: an output that is a FIFO (or any non-file node) is refused, untouched") {
+    // Renaming the finished file over a device (/dev/full, /dev/null as root),
+    // a FIFO or a socket would replace the node itself. A FIFO stands in for
+    // them all here: the same check, and safe to try as root.
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    const std::vector<std::pair<std::string, std::string>> outputs = {
+        {"-o", "node.exr"}, {"--png", "node.png"}, {"--stats", "node.json"}};
+    for (const auto& [flag, name] : outputs) {
+        const std::string fifo = dir.file(name);
+        REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+        std::vector<std::string> args{"render", scene, "--width", "8", "--height", "8", "--quiet"};
+        if (flag != "-o") args.insert(args.end(), {"-o", dir.file("out.exr")});
+        args.insert(args.end(), {flag, fifo});
+        CAPTURE(flag);
+        const RunResult r = runRaylab(args, 20);
+        checkRefused(r, dir, {"scene.json"}, 1, fifo + ":", "not a regular file");
+        CHECK(std::filesystem::is_fifo(std::filesystem::symlink_status(fifo)));
+        std::filesystem::remove(fifo);
+    }
+}
+
+TEST_CASE("command line: an output that is a symbolic link replaces the file it points to") {
+    // The link stays a link; the file it names (relative to the link's own
+    // folder) gets the render, also when it does not exist yet.
+    Scratch dir;
+    const std::string scene = dir.write("scene.json", kScene);
+    dir.write("real/old.png", "previous");
+    std::filesystem::create_directories(dir.file("links"));
+    std::filesystem::create_symlink("../real/old.png", dir.file("links/out.png"));
+    std::filesystem::create_symlink("../real/new.exr", dir.file("links/out.exr"));  // dangling
+    const RunResult r = runRaylab({"render", scene, "-o", dir.file("links/out.exr"), "--png",
+                                   dir.file("links/out.png"), "--width", "8", "--height", "8",
+                                   "--quiet"});
+    const std::string err = head(r.err);
+    CAPTURE(err);
+    CHECK(r.exitCode == 0);
+    CHECK(std::filesystem::is_symlink(dir.file("links/out.png")));
+    CHECK(std::filesystem::is_symlink(dir.file("links/out.exr")));
+    CHECK(startsWith(readFile(dir.file("real/old.png")), "\x89PNG"));
+    CHECK(startsWith(readFile(dir.file("real/new.exr")), "\x76\x2f\x31\x01"));  // EXR magic
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir.path()))
+        CHECK_FALSE(contains(e.path().string(), ".tmp."));
+}
+
+TEST_CASE("command line: a scene that is a FIFO, a device or too big is refused at once") {
+    Scratch dir;
+    const std::string out = dir.file("out.exr");
+    // A FIFO nobody writes to: opening it for reading would wait for ever.
+    const std::string fifo = dir.file("pipe.nff");
+    REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+    RunResult r = runRaylab({"render", fifo, "-o", out}, 20);
+    checkRefused(r, dir, {}, 1, fifo + ":", "not a regular file");
+    CHECK(r.seconds < 10);
+    // A device without end: /dev/zero under a scene name.
+    for (const char* name : {"zero.nff", "zero.json", "zero.obj"}) {
+        std::filesystem::create_symlink("/dev/zero", dir.file(name));
+        r = runRaylab({"render", dir.file(name), "-o", out}, 20);
+        checkRefused(r, dir, {}, 1, dir.file(name) + ":", "not a regular file");
+        CHECK(r.seconds < 10);
+    }
+    // A sparse file over the 1 GiB limit: refused from its size, not read.
+    const std::string big = dir.write("big.nff", "");
+    std::filesystem::resize_file(big, (uintmax_t(1) << 30) + 1);
+    r = runRaylab({"render", big, "-o", out}, 20);
+    checkRefused(r, dir, {"big.nff"}, 1, big + ":", "larger than the 1024 MiB");
+    CHECK(r.seconds < 10);
 }
 
 TEST_CASE("command line: a failed render never touches an existing output file") {

@@ -9,6 +9,7 @@
 
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/memory_limit.h"
 #include "renderer/render_setup.h"
 #include "robustness_helpers.h"
 
@@ -113,4 +114,88 @@ TEST_CASE("memory guard: a tiny file cannot expand into an unbounded scene") {
         checkRendered(r, dir, {"board.json"});
     }
     MESSAGE("4096x4096 checkerboard: exit " << r.exitCode << " after " << r.seconds << " s");
+}
+
+TEST_CASE("memory limit: the tightest of physical, available, cgroup and ulimit -v wins") {
+    using raylab::MemoryFacts;
+    const double GiB = double(1 << 30);
+    MemoryFacts f;
+    CHECK_FALSE(raylab::tightestMemoryLimit(f));  // nothing known: nothing refused
+    f.physicalBytes = 32 * GiB;
+    CHECK(raylab::tightestMemoryLimit(f)->bytes == 0.8 * 32 * GiB);
+    CHECK(raylab::tightestMemoryLimit(f)->source == "this machine's memory");
+    f.availableBytes = 20 * GiB;  // 20 < 25.6: what is free now rules
+    CHECK(raylab::tightestMemoryLimit(f)->bytes == 20 * GiB);
+    f.cgroupLimitBytes = 8 * GiB;  // a container of 8 GiB: 6.4 GiB usable
+    CHECK(raylab::tightestMemoryLimit(f)->bytes == 0.8 * 8 * GiB);
+    CHECK(raylab::tightestMemoryLimit(f)->source == "the cgroup memory limit");
+    // ulimit -v 4000000 (KiB) with 1 GiB mapped already: 4096000000 - 2^30 - 2^28.
+    f.addressSpaceBytes = 4000000.0 * 1024;
+    f.virtualSizeBytes = GiB;
+    CHECK(raylab::tightestMemoryLimit(f)->bytes == 4096000000.0 - GiB - 256.0 * (1 << 20));
+    CHECK(raylab::tightestMemoryLimit(f)->source == "the address-space limit (ulimit -v)");
+    // Mapped beyond the limit already: nothing more fits, never a negative budget.
+    f.virtualSizeBytes = 8 * GiB;
+    CHECK(raylab::tightestMemoryLimit(f)->bytes == 0);
+}
+
+TEST_CASE("memory limit: /proc/meminfo and cgroup files are parsed") {
+    CHECK(*raylab::parseMemAvailable("MemTotal:       24000000 kB\n"
+                                     "MemFree:        20000000 kB\n"
+                                     "MemAvailable:   22000000 kB\n") == 22000000.0 * 1024);
+    CHECK_FALSE(raylab::parseMemAvailable("MemTotal: 1 kB\n"));
+    CHECK(*raylab::parseCgroupLimit("4294967296\n") == 4294967296.0);
+    CHECK_FALSE(raylab::parseCgroupLimit("max\n"));
+    CHECK_FALSE(raylab::parseCgroupLimit("9223372036854771712\n"));  // v1 "unlimited"
+    CHECK_FALSE(raylab::parseCgroupLimit(""));
+    CHECK_FALSE(raylab::parseCgroupLimit("12abc"));
+}
+
+TEST_CASE("memory guard: the refusal names the limit that applies") {
+    raylab::Scene scene;
+    scene.sourcePath = "s.json";
+    raylab::RenderOptions o;
+    o.width = o.height = 1024;  // 1024^2 x 96 B = 96 MiB
+    const raylab::MemoryLimit limit{64.0 * (1 << 20), "the cgroup memory limit"};
+    try {
+        raylab::checkMemoryBudget(scene, o, limit);
+        FAIL("96 MiB passed a 64 MiB limit");
+    } catch (const raylab::InputError& e) {
+        CHECK(e.file() == "s.json");
+        CHECK(std::string(e.what()) ==
+              "a 1024x1024 image needs about 96 MiB, more than the 64 MiB that the cgroup "
+              "memory limit allows");
+    }
+    CHECK_NOTHROW(raylab::checkMemoryBudget(scene, o, raylab::MemoryLimit{97.0 * (1 << 20), "x"}));
+    CHECK_NOTHROW(raylab::checkMemoryBudget(scene, o, std::nullopt));
+}
+
+TEST_CASE("memory guard: under ulimit -v a render too big for the address space is refused") {
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer maps terabytes of shadow memory at start-up and cannot
+    // run under an address-space limit at all.
+    MESSAGE("skipped under AddressSanitizer");
+#else
+    // 10000^2 x 96 B = 9155 MiB: more than a 3 GiB address space, less than
+    // what 24 GB machines would allow without the limit.
+    Scratch dir;
+    const std::string scene = dir.write(
+        "s.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nresolution 8 8\ns 0 0 0 1\n");
+    const RunResult r = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", "10000",
+                                   "--height", "10000", "--quiet"},
+                                  30, 3.0 * (1 << 30));
+    checkRefused(r, dir, {"s.nff"}, 1, scene + ":", "9155 MiB");
+    const raylab::MemoryFacts facts = raylab::readMemoryFacts();
+    if (facts.physicalBytes && 0.8 * *facts.physicalBytes > 3.0 * (1 << 30))
+        CHECK(contains(r.err, "ulimit -v"));
+    // The same flags without the limit pass the guard on a machine with room
+    // for them (they are not rendered here: that takes minutes).
+    const auto free = raylab::tightestMemoryLimit(facts);
+    if (free && free->bytes > 10000.0 * 10000.0 * kBytesPerPixel) {
+        raylab::Scene s;
+        raylab::RenderOptions o;
+        o.width = o.height = 10000;
+        CHECK_NOTHROW(raylab::checkMemoryBudget(s, o));
+    }
+#endif
 }

@@ -3,6 +3,8 @@
 // written; a missing MTL or texture is only a warning. Renders are 8x8.
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <string>
 
@@ -14,8 +16,10 @@ namespace {
 
 const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
+/// Refused at `errorFile` (in the scratch folder), `line` (0: no line).
 void refused(const std::string& obj, int line, const std::string& fragment,
-             const std::vector<std::pair<std::string, std::string>>& files = {}) {
+             const std::vector<std::pair<std::string, std::string>>& files = {},
+             const std::string& errorFile = "mesh.obj") {
     Scratch dir;
     std::vector<std::string> inputs{"mesh.obj"};
     for (const auto& [name, body] : files) {
@@ -24,7 +28,8 @@ void refused(const std::string& obj, int line, const std::string& fragment,
     }
     const std::string path = dir.write("mesh.obj", obj);
     checkRefused(runRaylab(tinyRender(dir, path)), dir, inputs, 1,
-                 path + ":" + (line > 0 ? std::to_string(line) + ":" : ""), fragment);
+                 dir.file(errorFile) + ":" + (line > 0 ? std::to_string(line) + ":" : ""),
+                 fragment);
 }
 
 /// Rendered or refused, whichever the reader decides, within `seconds`.
@@ -113,13 +118,35 @@ TEST_CASE("obj: a trailing comment on a vertex line is not a bad coordinate") {
     rendered("v 0 0 0 # origin\nv 1 0 0\t# x\nv 0 1 0\nvn 0 0 1 # up\nf 1//1 2//1 3//1\n");
 }
 
-TEST_CASE("obj: broken MTL files are refused naming the material") {
-    // tinyobjloader reads "nan" as a number of its own choosing: either way is fine.
-    handled("mtllib m.mtl\nusemtl a\n" + kTriangle, 60, {{"m.mtl", "newmtl a\nKd nan 0 0\n"}});
-    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 0, "material 'a'",
-            {{"m.mtl", "newmtl a\nKd -1 0 0\n"}});
-    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 0, "Ns",
-            {{"m.mtl", "newmtl a\nNs -5\n"}});
+TEST_CASE("obj: broken MTL files are refused at the MTL's line, naming the material") {
+    const std::string obj = "mtllib m.mtl\nusemtl a\n" + kTriangle;
+    // tinyobjloader would read "nan" as 0 without a word.
+    refused(obj, 2, "'nan' is not a finite number", {{"m.mtl", "newmtl a\nKd nan 0 0\n"}},
+            "m.mtl");
+    refused(obj, 3, "'inf' is not a finite number", {{"m.mtl", "newmtl a\nKd 1 1 1\nNs inf\n"}},
+            "m.mtl");
+    refused(obj, 2, "material 'a': Kd", {{"m.mtl", "newmtl a\nKd -1 0 0\n"}}, "m.mtl");
+    refused(obj, 3, "material 'a': Ns", {{"m.mtl", "newmtl a\nKd 1 1 1\nNs -5\n"}}, "m.mtl");
+    // The second of two materials: the line inside its own block.
+    refused("mtllib m.mtl\nusemtl b\n" + kTriangle, 5, "material 'b': Ns",
+            {{"m.mtl", "newmtl a\nNs 5\n\nnewmtl b\nNs -5\n"}}, "m.mtl");
+    // The same library found through a second OBJ folder level.
+    refused("mtllib lib/m.mtl\nusemtl a\n" + kTriangle, 2, "Kd",
+            {{"lib/m.mtl", "newmtl a\nKd 0 -2 0\n"}}, "lib/m.mtl");
+}
+
+TEST_CASE("obj: an MTL library that is a device or FIFO is refused, not read without end") {
+    Scratch dir;
+    const std::string obj = dir.write("mesh.obj", "mtllib zero.mtl\nusemtl a\n" + kTriangle);
+    std::filesystem::create_symlink("/dev/zero", dir.file("zero.mtl"));
+    RunResult r = runRaylab(tinyRender(dir, obj), 20);
+    checkRefused(r, dir, {"mesh.obj"}, 1, dir.file("zero.mtl") + ":", "not a regular file");
+    CHECK(r.seconds < 10);
+    std::filesystem::remove(dir.file("zero.mtl"));
+    REQUIRE(::mkfifo(dir.file("zero.mtl").c_str(), 0644) == 0);
+    r = runRaylab(tinyRender(dir, obj), 20);
+    checkRefused(r, dir, {"mesh.obj"}, 1, dir.file("zero.mtl") + ":", "not a regular file");
+    CHECK(r.seconds < 10);
 }
 
 TEST_CASE("obj: a missing MTL library or texture is a warning and the render goes on") {
