@@ -41,6 +41,7 @@
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/io/text_file.h"
 #include "renderer/render_options.h"
 
 namespace raylab {
@@ -157,13 +158,11 @@ public:
 
 private:
     /// NFF is ASCII: UTF-16 (a byte-order mark or NUL bytes) is refused with
-    /// a clear message instead of a confusing token error.
+    /// a clear message, at the line of the first NUL, instead of a confusing
+    /// token error.
     void checkEncoding(std::string_view text) const {
-        const bool bom16 =
-            text.size() >= 2 && ((uint8_t(text[0]) == 0xFF && uint8_t(text[1]) == 0xFE) ||
-                                 (uint8_t(text[0]) == 0xFE && uint8_t(text[1]) == 0xFF));
-        if (bom16 || std::memchr(text.data(), '\0', text.size()) != nullptr)
-            throw InputError(m_path, 1, "not a text file (UTF-16 or binary data); NFF must be ASCII");
+        if (const auto [line, message] = findNonText(text, "NFF"); line > 0)
+            throw InputError(m_path, line, "not a text file: " + message);
     }
 
     [[noreturn]] void failAt(int line, const std::string& message) const {
@@ -204,6 +203,9 @@ private:
         if (t == "b") {
             m_expected = "3 numbers (R G B)";
             m_background = color("background colour");
+            // Negative radiance would reach the pixels of every ray that misses.
+            if (m_background.r < 0 || m_background.g < 0 || m_background.b < 0)
+                failEntity("background colour must be >= 0");
             return;
         }
         if (t == "v") {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -189,13 +190,20 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
         if (kw == "v") ++vTotal;
         if (kw == "vn") ++vnTotal;
     });
-    auto check = [](long idx, long soFar, long total, const char* what,
+    // `text` is one index as written (up to the next '/' or the corner's end).
+    auto check = [](const std::string& text, long soFar, long total, const char* what,
                     const char* plural) -> std::string {
+        const std::string shown = text.substr(0, 24);
+        errno = 0;
+        char* end = nullptr;
+        const long idx = std::strtol(text.c_str(), &end, 10);
+        if (end == text.c_str() || *end != '\0')
+            return std::string("face corner has '") + shown + "' where a " + what +
+                   " index belongs";
         const long resolved = idx > 0 ? idx - 1 : soFar + idx;
-        if (idx == 0 || resolved < 0 || resolved >= total)
-            return std::string("face refers to ") + what + " " + std::to_string(idx) +
-                   " but the file has " + std::to_string(total) + " " +
-                   (total == 1 ? what : plural);
+        if (errno == ERANGE || idx == 0 || resolved < 0 || resolved >= total)
+            return std::string("face refers to ") + what + " " + shown + " but the file has " +
+                   std::to_string(total) + " " + (total == 1 ? what : plural);
         return "";
     };
     long vSoFar = 0, vnSoFar = 0;
@@ -225,13 +233,12 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
                                  " corners (the triangulation limit)"};
                 return;
             }
-            std::string message = check(std::strtol(corner.c_str(), nullptr, 10), vSoFar, vTotal,
-                                        "vertex", "vertices");
             const size_t s1 = corner.find('/');
             const size_t s2 = s1 == std::string::npos ? s1 : corner.find('/', s1 + 1);
+            std::string message =
+                check(corner.substr(0, s1), vSoFar, vTotal, "vertex", "vertices");
             if (message.empty() && s2 != std::string::npos && s2 + 1 < corner.size())
-                message = check(std::strtol(corner.c_str() + s2 + 1, nullptr, 10), vnSoFar, vnTotal,
-                                "normal", "normals");
+                message = check(corner.substr(s2 + 1), vnSoFar, vnTotal, "normal", "normals");
             if (!message.empty()) {
                 bad = {line, message};
                 return;
@@ -241,28 +248,38 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
     return bad;
 }
 
-/// Finds the first statement among `keywords` with an argument that is not a
-/// finite number. tinyobjloader reads "nan", "inf" and words it cannot parse
-/// as 0 without a word, which would silently make a different mesh or
-/// material. `skipWords` are allowed first arguments that introduce a
-/// non-numeric form (MTL "Kd spectral file.rfl", "Kd xyz 1 1 1").
+/// A statement whose arguments are all numbers.
+struct NumericStatement {
+    const char* keyword;
+    int minArgs;  ///< fewer is an error (tinyobjloader would read the rest as 0)
+};
+
+/// Finds the first of `statements` with an argument that is not a finite
+/// number, or with too few. tinyobjloader reads "nan", "inf", words it cannot
+/// parse and missing values as 0 without a word, which would silently make a
+/// different mesh or material. With `floatRange`, finite values beyond float
+/// (tinyobjloader's type) are refused too instead of becoming infinities.
+/// `skipWords` are allowed first arguments that introduce a non-numeric form
+/// (MTL "Kd spectral file.rfl", "Kd xyz 1 1 1").
 /// Returns {line, message} or {0, ""}.
 std::pair<int, std::string> findBadNumber(const std::string& text,
-                                          std::initializer_list<const char*> keywords,
+                                          std::initializer_list<NumericStatement> statements,
+                                          bool floatRange,
                                           std::initializer_list<const char*> skipWords = {}) {
     std::pair<int, std::string> bad{0, ""};
     forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
         if (bad.first > 0) return;
-        bool numeric = false;
-        for (const char* k : keywords) numeric = numeric || kw == k;
-        if (!numeric) return;
+        int minArgs = -1;
+        for (const NumericStatement& st : statements)
+            if (kw == st.keyword) minArgs = st.minArgs;
+        if (minArgs < 0) return;
         // A '#' starts a comment, also after the numbers.
         for (const char* c = q; c < eol; ++c)
             if (*c == '#') {
                 eol = c;
                 break;
             }
-        bool first = true;
+        int count = 0;
         while (true) {
             while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
             if (q >= eol) break;
@@ -270,18 +287,25 @@ std::pair<int, std::string> findBadNumber(const std::string& text,
             while (te < eol && *te != ' ' && *te != '\t' && *te != '\r') ++te;
             const std::string token(q, te);
             q = te;
-            if (first)
+            if (count == 0)
                 for (const char* w : skipWords)
                     if (token == w) return;
-            first = false;
+            ++count;
             char* end = nullptr;
             const double x = std::strtod(token.c_str(), &end);
+            const std::string shown = "'" + kw + "': '" + token.substr(0, 40) + "'";
             if (end != token.c_str() + token.size() || !std::isfinite(x)) {
-                bad = {line, "'" + kw + "': '" + token.substr(0, 40) +
-                                 "' is not a finite number"};
+                bad = {line, shown + " is not a finite number"};
+                return;
+            }
+            if (floatRange && std::fabs(x) > double(std::numeric_limits<float>::max())) {
+                bad = {line, shown + " is beyond float range (about 3.4e38)"};
                 return;
             }
         }
+        if (count < minArgs)
+            bad = {line, "'" + kw + "' needs " + std::to_string(minArgs) + " numbers, found " +
+                             std::to_string(count)};
     });
     return bad;
 }
@@ -388,9 +412,13 @@ public:
         Library lib;
         lib.path = path;
         lib.text = readTextFile(path);
+        if (const auto [line, message] = findNonText(lib.text, "MTL"); line > 0)
+            throw InputError(path, line, message);
         if (const auto [line, message] =
-                findBadNumber(lib.text, {"Ka", "Kd", "Ks", "Ke", "Tf", "Ns", "Ni", "d", "Tr", "illum"},
-                              {"spectral", "xyz"});
+                findBadNumber(lib.text,
+                              {{"Ka", 1}, {"Kd", 1}, {"Ks", 1}, {"Ke", 1}, {"Tf", 1}, {"Ns", 1},
+                               {"Ni", 1}, {"d", 1}, {"Tr", 1}, {"illum", 1}},
+                              false, {"spectral", "xyz"});
             line > 0)
             throw InputError(path, line, message);
         lib.firstMaterial = materials->size();
@@ -508,11 +536,15 @@ struct PartBuilder {
 
 ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     const std::string text = readTextFile(path);
+    // tinyobjloader reads a NUL as the end of a line and UTF-16 as no statements.
+    if (const auto [line, message] = findNonText(text, "OBJ"); line > 0)
+        throw InputError(path, line, message);
     // tinyobjloader only warns about bad indices (reporting the file's last
     // line) and may read out of bounds first; check them here with the real line.
     if (const auto [line, message] = findBadFaceIndex(text); line > 0)
         throw InputError(path, line, message);
-    if (const auto [line, message] = findBadNumber(text, {"v", "vn", "vt"}); line > 0)
+    if (const auto [line, message] = findBadNumber(text, {{"v", 3}, {"vn", 3}, {"vt", 1}}, true);
+        line > 0)
         throw InputError(path, line, message);
 
     tinyobj::attrib_t attrib;

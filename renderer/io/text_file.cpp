@@ -56,6 +56,21 @@ std::string readTextFile(const std::string& path, size_t maxBytes) {
     return text;
 }
 
+std::pair<int, std::string> findNonText(std::string_view text, const std::string& format) {
+    const auto byte = [&](size_t i) { return static_cast<unsigned char>(text[i]); };
+    if (text.size() >= 2 &&
+        ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF)))
+        return {1, "file starts with a UTF-16 byte-order mark; " + format +
+                       " must be ASCII or UTF-8 text"};
+    const size_t nul = text.find('\0');
+    if (nul == std::string_view::npos) return {0, ""};
+    int line = 1;
+    for (size_t i = 0; i < nul; ++i)
+        if (text[i] == '\n') ++line;
+    return {line, "NUL byte (binary data or a UTF-16 file); " + format +
+                      " must be ASCII or UTF-8 text"};
+}
+
 std::string directoryOf(const std::string& path) {
     const size_t slash = path.find_last_of('/');
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);

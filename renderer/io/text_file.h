@@ -3,6 +3,8 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace raylab {
 
@@ -17,6 +19,12 @@ constexpr size_t kMaxTextFileBytes = size_t(1) << 30;
 /// end), "file is N MiB, larger than ..." beyond `maxBytes`, and
 /// "read error: <reason>" when reading fails midway.
 std::string readTextFile(const std::string& path, size_t maxBytes = kMaxTextFileBytes);
+
+/// Where a file that should be text is not: {1, "..."} for a UTF-16
+/// byte-order mark, {line of the first NUL byte, "..."} for binary data or
+/// UTF-16 without a mark, {0, ""} for text. `format` names what the file
+/// should be ("NFF", "OBJ") in the message.
+std::pair<int, std::string> findNonText(std::string_view text, const std::string& format);
 
 /// The directory part of `path` including the trailing '/', or "" when the
 /// path has no directory ("scene.json" -> "", "a/b.json" -> "a/").

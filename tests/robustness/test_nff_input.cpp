@@ -42,6 +42,8 @@ TEST_CASE("nff: binary garbage is refused on its first line") {
     refused(std::string("\x89\xfe\x01garbage\x7f\xc3\x28 s 1 2 3", 20) + "\n", 1, "unknown entity");
     // With NUL bytes: recognised as binary up front.
     refused(std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00 v from", 18), 1, "not a text file");
+    // A NUL further down is reported at its own line (8), not at line 1.
+    refused(kView + std::string("s 0 0 \0 0 1\n", 12), 8, "NUL byte");
 }
 
 TEST_CASE("nff: a file truncated in the middle of an entity names the last line") {
@@ -62,6 +64,8 @@ TEST_CASE("nff: NaN, infinities and out-of-range numbers are refused with their 
     refused(kView + "s -1e400 0 0 1\n", 8, "out of range");
     refused(kView + "f 1 1 1 1e999 0 0 0 1\n", 8, "out of range");
     refused("v\nfrom 0 0 nan\nat 0 0 0\nup 0 1 0\nangle 40\n", 2, "finite");
+    // A negative background would put negative radiance in every missed pixel.
+    refused(kView + "b -1 0 0\ns 0 0 0 1\n", 8, "background colour must be >= 0");
 }
 
 TEST_CASE("nff: zero, negative and absurd counts and resolutions are refused") {

@@ -112,6 +112,30 @@ TEST_CASE("obj: NaN, infinite and overflowing vertices are refused") {
     refused("v 0 0 0\nv 3e38 0 0\nv 0 3e38 0\nf 1 2 3\n", 0, "");
 }
 
+TEST_CASE("obj: words, missing values, NUL bytes and floats out of range are refused at their line") {
+    // tinyobjloader reads each of these as 0 (or as the end of the line)
+    // without a word: a different mesh than the file says.
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n", 4, "'a' where a vertex index belongs");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//x 2 3\n", 4, "'x' where a normal index belongs");
+    // A huge index is shown as written, not clamped.
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n", 4,
+            "vertex 99999999999999999999999 but the file has 3 vertices");
+    refused("v 0 0 0\nv 1\nv 0 1 0\nf 1 2 3\n", 2, "'v' needs 3 numbers, found 1");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0\nf 1//1 2//1 3//1\n", 4, "'vn' needs 3");
+    refused("v 0 0 0\nv 1e300 0 0\nv 0 1 0\nf 1 2 3\n", 2, "'1e300' is beyond float range");
+    refused(std::string("v 0 0 0\nv 1 0 0\nv 0 \0 1 0\nf 1 2 3\n", 34), 3, "NUL byte");
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 2, "NUL byte",
+            {{"m.mtl", std::string("newmtl a\nKd 1 \0 0 0\n", 20)}}, "m.mtl");
+    // Vertex colours (v x y z r g b) and a 1-component vt are fine.
+    rendered("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nvt 0.5\nf 1 2 3\n");
+}
+
+TEST_CASE("obj: tinyobjloader's own warnings keep the line they are about") {
+    const std::string err =
+        rendered("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/5 2/5 3/5\n");
+    CHECK(contains(err, "mesh.obj:5: Vertex texcoord indices out of bounds"));
+}
+
 TEST_CASE("obj: a trailing comment on a vertex line is not a bad coordinate") {
     // tinyobjloader reads "v 0 0 0 # origin" as the origin; a check for
     // non-numeric coordinates must stop at the comment.
@@ -166,7 +190,9 @@ TEST_CASE("obj: UTF-16 files are refused, CRLF line ends are accepted") {
         le += c;
         le += '\0';
     }
-    refused(le, 0, "");
+    refused(le, 1, "UTF-16");
+    // UTF-16 without a byte-order mark: its NUL bytes give it away on line 1.
+    refused(le.substr(2), 1, "NUL byte");
     std::string crlf;
     for (char c : "o tri\n" + kTriangle) {
         if (c == '\n') crlf += '\r';
