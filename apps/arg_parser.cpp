@@ -35,6 +35,12 @@ bool ArgParser::peekFlag() const {
 
 std::string ArgParser::value(const std::string& flag) {
     if (done()) throw UsageError(flag + ": missing value");
+    // A flag given twice is almost always a script that appends to a command
+    // line: which value wins would be a guess, so neither does.
+    const std::string name = flag == "-o" ? "--output" : flag;  // the one short alias
+    for (const std::string& seen : m_seen)
+        if (seen == name) throw UsageError(flag + ": given more than once");
+    m_seen.push_back(name);
     return next();
 }
 

@@ -17,7 +17,8 @@ public:
     std::string next();
     /// True when the next argument looks like a flag ("-x", "--xyz").
     bool peekFlag() const;
-    /// The value after the flag `flag`, consumed (error when missing).
+    /// The value after the flag `flag`, consumed (error when missing, or when
+    /// the flag was given before: no silent "last one wins").
     std::string value(const std::string& flag);
     long long integer(const std::string& flag, long long lo, long long hi);
     double number(const std::string& flag, double lo, double hi);
@@ -27,6 +28,7 @@ public:
 private:
     std::vector<std::string> m_args;
     size_t m_pos = 0;
+    std::vector<std::string> m_seen;  ///< flags whose value was read (-o as --output)
 };
 
 }  // namespace raylab

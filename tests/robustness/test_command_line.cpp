@@ -33,6 +33,8 @@ TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit
         {"--epsilon", "-1"},       {"--epsilon", "inf"},    {"--min-weight", "2"},
         {"--seed", "-1"},          {"--adaptive", "nan"},   {"--accel", "bvh"},
         {"--precision", "half"},   {"--bogus"},             {"--width"},
+        // Given twice (the command already has -o): no silent "last one wins".
+        {"--width", "8", "--width", "9"}, {"--output", "other.exr"}, {"-o", "other.exr"},
     };
     for (const std::vector<std::string>& flags : bad) {
         Scratch dir;
