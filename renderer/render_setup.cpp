@@ -82,7 +82,10 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
             : image + " of " + std::to_string(primitives) + " primitives needs about " +
                   mib(e.total()) + " MiB (film " + mib(e.filmBytes) +
                   " MiB, acceleration structure " + mib(e.accelBytes) + " MiB)";
-    throw InputError(scene.sourcePath, 0,
+    // Point at the file's image size when that is what the render uses.
+    const bool sizeFromFile =
+        options.width == scene.image.width && options.height == scene.image.height;
+    throw InputError(scene.sourcePath, sizeFromFile ? scene.image.sizeLine : 0,
                      what + ", more than the " + mib(limit->bytes) + " MiB that " + limit->source +
                          " allows");
 }

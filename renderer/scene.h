@@ -23,6 +23,7 @@ struct ImageSettings {
     int height = 480;
     int spp = 1;        ///< samples per pixel
     int maxDepth = 5;   ///< ray-tree depth limit; the camera ray has depth 1
+    int sizeLine = 0;   ///< the scene file's line that sets width/height (0: defaults)
 };
 
 /// One scene object: an analytic shape or a triangle mesh, with its material.

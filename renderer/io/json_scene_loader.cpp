@@ -303,6 +303,7 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
     ImageSettings& im = m_scene.image;
     if (const JsonValue* x = f.get("width")) im.width = int(integer(*x, f.path("width"), 1, kMaxImageSide));
     if (const JsonValue* x = f.get("height")) im.height = int(integer(*x, f.path("height"), 1, kMaxImageSide));
+    if (f.get("width") || f.get("height")) im.sizeLine = v.line();
     if (const JsonValue* x = f.get("spp")) im.spp = int(integer(*x, f.path("spp"), 1, kMaxSpp));
     if (const JsonValue* x = f.get("depth")) im.maxDepth = int(integer(*x, f.path("depth"), 1, kMaxDepth));
 }

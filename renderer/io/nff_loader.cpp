@@ -253,6 +253,7 @@ private:
                            std::to_string(h));
             m_width = int(w);
             m_height = int(h);
+            m_sizeLine = m_entityLine;
             return;
         }
         if (looksNumeric(t)) {
@@ -592,6 +593,7 @@ private:
         }
         s.cameraNear = m_hither;
         s.image.width = m_width;
+        s.image.sizeLine = m_sizeLine;
         s.image.height = m_height;
         s.image.maxDepth = 5;
         s.background = m_background;
@@ -633,6 +635,7 @@ private:
     double m_angle = 45, m_hither = 0;
     unsigned m_seen = 0;
     int m_width = 512, m_height = 512;
+    int m_sizeLine = 0;  ///< line of `resolution`
     Color m_background{0, 0, 0};
     std::vector<NffLight> m_lights;
     std::vector<Material> m_materials;

@@ -656,8 +656,12 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     if (model.parts.empty()) {
         if (const int firstFace = lineOfStatement(text, "f", 0))
             throw InputError(path, firstFace,
-                             "the OBJ file has no triangles: every face has zero area or fewer "
-                             "than 3 corners");
+                             xf.isIdentity()
+                                 ? "the OBJ file has no triangles: every face has zero area or "
+                                   "fewer than 3 corners"
+                                 : "no triangles left: every face has zero area or fewer than 3 "
+                                   "corners once the scene's transform (scale, rotate) is "
+                                   "applied");
         throw InputError(path, 0, "the OBJ file has no faces");
     }
 

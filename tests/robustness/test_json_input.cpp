@@ -225,6 +225,17 @@ TEST_CASE("json: mesh files that are missing, broken, or miss their MTL") {
         checkRefused(runRaylab(tinyRender(dir, path)), dir, {"scene.json", "bad.obj"}, 1,
                      dir.file("bad.obj") + ":4:", "vertex 4");
     }
+    // A scale that collapses every triangle: the message says the transform
+    // did it, not the OBJ (which is fine on its own).
+    {
+        Scratch dir;
+        dir.write("tri.obj", tri);
+        const std::string path = dir.write(
+            "scene.json",
+            scene(R"({"type": "mesh", "file": "tri.obj", "transform": {"scale": 1e-300}})"));
+        checkRefused(runRaylab(tinyRender(dir, path)), dir, {"scene.json", "tri.obj"}, 1,
+                     dir.file("tri.obj") + ":4:", "once the scene's transform");
+    }
     // Missing MTL library and texture: warnings, and the render goes on.
     rendered(scene(R"({"type": "mesh", "file": "m.obj"})"),
              {{"m.obj", "mtllib missing.mtl\nusemtl red\n" + tri}});

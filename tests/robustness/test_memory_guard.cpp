@@ -36,7 +36,7 @@ TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
                    "s 0 0 0 1\n");
     const RunResult r =
         runRaylab({"render", scene, "-o", dir.file("out.exr"), "--quiet"}, 30);
-    checkRefused(r, dir, {"big.nff"}, 1, scene + ":", "60000x60000");
+    checkRefused(r, dir, {"big.nff"}, 1, scene + ":6:", "60000x60000");  // the resolution line
     CHECK(contains(r.err, "MiB"));
     CHECK(r.seconds < 10);
 }
@@ -52,7 +52,7 @@ TEST_CASE("memory guard: a huge JSON image is refused up front") {
                     " \"radius\": 1}]}\n");
     const RunResult r =
         runRaylab({"render", scene, "-o", dir.file("out.exr"), "--quiet"}, 30);
-    checkRefused(r, dir, {"big.json"}, 1, scene + ":", "32768x32768");
+    checkRefused(r, dir, {"big.json"}, 1, scene + ":1:", "32768x32768");  // the "image" object
     CHECK(r.seconds < 10);
 }
 
