@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -46,17 +47,63 @@ std::optional<double> parseCgroupLimit(const std::string& text) {
     return bytes;
 }
 
+std::optional<std::string> parseCgroupPath(const std::string& procSelfCgroup,
+                                           const std::string& controller) {
+    std::istringstream in(procSelfCgroup);
+    for (std::string line; std::getline(in, line);) {
+        // "ID:CONTROLLERS:PATH"; v2 has ID 0 and no controllers.
+        const size_t a = line.find(':'), b = a == std::string::npos ? a : line.find(':', a + 1);
+        if (b == std::string::npos) continue;
+        const std::string controllers = line.substr(a + 1, b - a - 1);
+        bool match = controller.empty() ? line.compare(0, a, "0") == 0 && controllers.empty()
+                                        : false;
+        for (size_t p = 0; !controller.empty() && p <= controllers.size();) {
+            const size_t comma = std::min(controllers.find(',', p), controllers.size());
+            match = match || controllers.compare(p, comma - p, controller) == 0;
+            p = comma + 1;
+        }
+        if (!match) continue;
+        std::string path = line.substr(b + 1);
+        // Outside the namespace the kernel shows "/../x"; nothing to read there.
+        if (path.empty() || path[0] != '/' || path.find("..") != std::string::npos)
+            return std::nullopt;
+        while (path.size() > 1 && path.back() == '/') path.pop_back();
+        return path;
+    }
+    return std::nullopt;
+}
+
 MemoryFacts readMemoryFacts() {
     MemoryFacts f;
     const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
     if (pages > 0 && pageSize > 0) f.physicalBytes = double(pages) * double(pageSize);
     if (const auto meminfo = readSmallFile("/proc/meminfo"))
         f.availableBytes = parseMemAvailable(*meminfo);
-    // cgroup v2 as a container sees it; else the v1 memory controller.
-    if (const auto v2 = readSmallFile("/sys/fs/cgroup/memory.max"))
-        f.cgroupLimitBytes = parseCgroupLimit(*v2);
-    else if (const auto v1 = readSmallFile("/sys/fs/cgroup/memory/memory.limit_in_bytes"))
-        f.cgroupLimitBytes = parseCgroupLimit(*v1);
+    // The process's own cgroup and every group above it up to the mount root
+    // (often all a container sees); the smallest limit applies. cgroup v2
+    // first, else the v1 memory controller.
+    const auto smallestOnTheWayUp = [&](const std::string& root, const std::string& group,
+                                        const char* file) {
+        bool found = false;
+        std::string dir = root + (group == "/" ? std::string() : group);
+        while (true) {
+            if (const auto text = readSmallFile((dir + "/" + file).c_str())) {
+                found = true;
+                if (const auto bytes = parseCgroupLimit(*text))
+                    if (!f.cgroupLimitBytes || *bytes < *f.cgroupLimitBytes)
+                        f.cgroupLimitBytes = bytes;
+            }
+            if (dir.size() <= root.size()) break;
+            dir = dir.substr(0, dir.find_last_of('/'));
+        }
+        return found;
+    };
+    const std::string self = readSmallFile("/proc/self/cgroup").value_or("");
+    const auto v2 = parseCgroupPath(self, "");
+    if (!(v2 && smallestOnTheWayUp("/sys/fs/cgroup", *v2, "memory.max")))
+        smallestOnTheWayUp("/sys/fs/cgroup/memory",
+                           parseCgroupPath(self, "memory").value_or("/"),
+                           "memory.limit_in_bytes");
     struct rlimit as {};
     if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
         f.addressSpaceBytes = double(as.rlim_cur);

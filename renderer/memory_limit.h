@@ -15,7 +15,8 @@ namespace raylab {
 struct MemoryFacts {
     std::optional<double> physicalBytes;       ///< sysconf(_SC_PHYS_PAGES) x page size
     std::optional<double> availableBytes;      ///< MemAvailable in /proc/meminfo
-    std::optional<double> cgroupLimitBytes;    ///< cgroup v2 memory.max (v1 limit_in_bytes)
+    std::optional<double> cgroupLimitBytes;    ///< smallest memory.max (v1: limit_in_bytes)
+                                               ///< from this process's cgroup up to the root
     std::optional<double> addressSpaceBytes;   ///< RLIMIT_AS soft limit
     double virtualSizeBytes = 0;               ///< this process's address space in use now
 };
@@ -45,5 +46,12 @@ std::optional<double> parseMemAvailable(const std::string& meminfo);
 /// A cgroup memory limit file's value in bytes; nullopt for "max" (v2) or
 /// the v1 "unlimited" value (anything at or above 2^62).
 std::optional<double> parseCgroupLimit(const std::string& text);
+
+/// This process's cgroup path in a /proc/self/cgroup text: the v2 group
+/// ("0::/path") when `controller` is empty, else the v1 hierarchy that holds
+/// `controller` ("4:memory:/path"). nullopt when absent or outside this
+/// namespace ("/../x").
+std::optional<std::string> parseCgroupPath(const std::string& procSelfCgroup,
+                                           const std::string& controller);
 
 }  // namespace raylab

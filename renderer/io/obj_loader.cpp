@@ -6,6 +6,7 @@
 
 #include <sys/stat.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -121,11 +122,26 @@ std::vector<std::string> splitMessages(const std::string& text) {
     return out;
 }
 
-/// Line number in a tinyobjloader message such as "... (line 12.)", or 0.
-int lineInMessage(const std::string& message) {
-    const size_t at = message.find("line ");
-    if (at == std::string::npos) return 0;
-    return std::atoi(message.c_str() + at + 5);
+/// The line a tinyobjloader message refers to, and the message without that
+/// reference. Its formats vary ("... (line 12.)", "... line 12.)", "line: 12",
+/// "(line 4 in .mtl.)"); the last "line" followed by a number is the one (a
+/// material name quoted earlier in the message may contain the word).
+/// Returns {0, message} when there is none.
+std::pair<int, std::string> splitLineReference(const std::string& message) {
+    for (size_t at = message.rfind("line"); at != std::string::npos;
+         at = at == 0 ? std::string::npos : message.rfind("line", at - 1)) {
+        size_t q = at + 4;
+        while (q < message.size() && (message[q] == ':' || message[q] == ' ')) ++q;
+        if (q >= message.size() || !std::isdigit(static_cast<unsigned char>(message[q])))
+            continue;
+        const int line = std::atoi(message.c_str() + q);
+        size_t cut = at;
+        while (cut > 0 && (message[cut - 1] == ' ' || message[cut - 1] == '(' ||
+                           message[cut - 1] == '.'))
+            --cut;
+        return {line, message.substr(0, cut)};
+    }
+    return {0, message};
 }
 
 /// Collects warnings once each, counting repeats (an OBJ whose MTL lacks a
@@ -134,16 +150,19 @@ int lineInMessage(const std::string& message) {
 class Warnings {
 public:
     explicit Warnings(std::string path) : m_path(std::move(path)) {}
-    void add(const std::string& message, int line = 0) {
-        auto [it, inserted] = m_counts.emplace(message, Entry{line, 0});
-        if (inserted) m_order.push_back(message);
+    /// `file` names another file than the OBJ (an MTL library).
+    void add(const std::string& message, int line = 0, const std::string& file = "") {
+        const std::string where = file.empty() ? m_path : file;
+        auto [it, inserted] = m_counts.emplace(where + "\n" + message, Entry{where, message, line, 0});
+        if (inserted) m_order.push_back(it->first);
         ++it->second.count;
     }
     std::vector<std::string> lines() const {
         std::vector<std::string> out;
-        for (const std::string& m : m_order) {
-            const Entry& e = m_counts.at(m);
-            out.push_back(m_path + (e.line > 0 ? ":" + std::to_string(e.line) : "") + ": " + m +
+        for (const std::string& key : m_order) {
+            const Entry& e = m_counts.at(key);
+            out.push_back(e.file + (e.line > 0 ? ":" + std::to_string(e.line) : "") + ": " +
+                          e.message +
                           (e.count > 1 ? " (" + std::to_string(e.count) + " times)" : ""));
         }
         return out;
@@ -151,6 +170,7 @@ public:
 
 private:
     struct Entry {
+        std::string file, message;
         int line;
         int count;
     };
@@ -185,9 +205,10 @@ void forEachStatement(const std::string& text, Fn fn) {
 /// before tinyobjloader, whose triangulation reads vertices by index unchecked.
 /// Returns {line, message} or {0, ""}.
 std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
-    long vTotal = 0, vnTotal = 0;
+    long vTotal = 0, vtTotal = 0, vnTotal = 0;
     forEachStatement(text, [&](const std::string& kw, const char*, const char*, int) {
         if (kw == "v") ++vTotal;
+        if (kw == "vt") ++vtTotal;
         if (kw == "vn") ++vnTotal;
     });
     // `text` is one index as written (up to the next '/' or the corner's end).
@@ -206,10 +227,11 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
                    std::to_string(total) + " " + (total == 1 ? what : plural);
         return "";
     };
-    long vSoFar = 0, vnSoFar = 0;
+    long vSoFar = 0, vtSoFar = 0, vnSoFar = 0;
     std::pair<int, std::string> bad{0, ""};
     forEachStatement(text, [&](const std::string& kw, const char* q, const char* eol, int line) {
         if (kw == "v") ++vSoFar;
+        if (kw == "vt") ++vtSoFar;
         if (kw == "vn") ++vnSoFar;
         if (kw != "f" || bad.first > 0) return;
         for (const char* c = q; c < eol; ++c)  // a '#' starts a trailing comment
@@ -237,6 +259,12 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
             const size_t s2 = s1 == std::string::npos ? s1 : corner.find('/', s1 + 1);
             std::string message =
                 check(corner.substr(0, s1), vSoFar, vTotal, "vertex", "vertices");
+            // v/vt and v/vt/vn: raylab does not use texture coordinates, but
+            // one out of range is a broken file all the same.
+            const size_t vtEnd = s2 == std::string::npos ? corner.size() : s2;
+            if (message.empty() && s1 != std::string::npos && vtEnd > s1 + 1)
+                message = check(corner.substr(s1 + 1, vtEnd - s1 - 1), vtSoFar, vtTotal,
+                                "texture coordinate", "texture coordinates");
             if (message.empty() && s2 != std::string::npos && s2 + 1 < corner.size())
                 message = check(corner.substr(s2 + 1), vnSoFar, vnTotal, "normal", "normals");
             if (!message.empty()) {
@@ -376,30 +404,65 @@ void addTinyObjWarnings(const std::vector<std::string>& messages, const std::str
             continue;
         }
         // Anything else is passed on, at the line tinyobjloader names in it.
-        const int line = lineInMessage(m);
-        const size_t at = m.find(" (line ");
-        warn.add(line > 0 && at != std::string::npos ? m.substr(0, at) : m, line);
+        const auto [line, text] = splitLineReference(m);
+        warn.add(text, line);
     }
+}
+
+/// The MTL text with the statements tinyobjloader misreads rewritten, line
+/// for line (line numbers stay valid): "d -halo X" becomes "d X" (it would
+/// read the dissolve as 0), and a colour with one value, "Kd 0.5", becomes
+/// "Kd 0.5 0.5 0.5" (the MTL rule: g = b = r; it would read 0.5 0 0, red).
+std::string normalizeMtl(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    size_t p = 0;
+    while (p <= text.size()) {
+        size_t eol = text.find('\n', p);
+        if (eol == std::string::npos) eol = text.size();
+        std::string line = text.substr(p, eol - p);
+        const size_t hash = line.find('#');  // a trailing comment is kept as it is
+        const std::string comment = hash == std::string::npos ? "" : " " + line.substr(hash);
+        std::istringstream in(line.substr(0, hash));
+        std::vector<std::string> tokens;
+        for (std::string t; in >> t;) tokens.push_back(t);
+        const bool colour = !tokens.empty() && (tokens[0] == "Ka" || tokens[0] == "Kd" ||
+                                                tokens[0] == "Ks" || tokens[0] == "Ke" ||
+                                                tokens[0] == "Tf" || tokens[0] == "Kt");
+        if (tokens.size() == 3 && tokens[0] == "d" && tokens[1] == "-halo")
+            line = "d " + tokens[2] + comment;
+        else if (colour && tokens.size() == 2)
+            line = tokens[0] + " " + tokens[1] + " " + tokens[1] + " " + tokens[1] + comment;
+        out += line;
+        if (eol < text.size()) out += '\n';
+        p = eol + 1;
+    }
+    return out;
 }
 
 /// Reads the MTL libraries an OBJ names, in place of tinyobjloader's
 /// MaterialFileReader: through readTextFile, so a device, FIFO or huge file
 /// is refused instead of read without end; relative to the OBJ's directory
 /// (absolute names stay absolute); with NaN/Inf values refused at their line;
-/// and keeping each library's text so a bad material is reported at the line
-/// that makes it bad.
+/// and keeping each library's text so a bad material, and each warning, is
+/// reported at the MTL's own line.
 class MtlLibraryReader : public tinyobj::MaterialReader {
 public:
     struct Library {
         std::string path, text;
         size_t firstMaterial = 0, endMaterial = 0;  ///< [first, end) in the material list
     };
+    struct Warning {
+        std::string path;
+        int line;
+        std::string message;
+    };
 
     explicit MtlLibraryReader(std::string objPath) : m_objPath(std::move(objPath)) {}
 
     bool operator()(const std::string& matId, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* matMap, std::string* warn,
-                    std::string* err) override {
+                    std::string*) override {
         const std::string path = resolveRelativeTo(m_objPath, matId);
         struct stat st {};
         // Only a library that is not there is a warning (the render goes on
@@ -414,42 +477,58 @@ public:
         lib.text = readTextFile(path);
         if (const auto [line, message] = findNonText(lib.text, "MTL"); line > 0)
             throw InputError(path, line, message);
-        if (const auto [line, message] =
-                findBadNumber(lib.text,
-                              {{"Ka", 1}, {"Kd", 1}, {"Ks", 1}, {"Ke", 1}, {"Tf", 1}, {"Ns", 1},
-                               {"Ni", 1}, {"d", 1}, {"Tr", 1}, {"illum", 1}},
-                              false, {"spectral", "xyz"});
+        const std::string normalized = normalizeMtl(lib.text);
+        if (const auto [line, message] = findBadNumber(
+                normalized,
+                {{"Ka", 3}, {"Kd", 3}, {"Ks", 3}, {"Ke", 3}, {"Tf", 3}, {"Kt", 3}, {"Ns", 1},
+                 {"Ni", 1}, {"d", 1}, {"Tr", 1}, {"illum", 1}},
+                false, {"spectral", "xyz"});
             line > 0)
             throw InputError(path, line, message);
         lib.firstMaterial = materials->size();
-        std::istringstream in(lib.text);
-        tinyobj::LoadMtl(matMap, materials, &in, warn, err);
+        std::istringstream in(normalized);
+        std::string mtlWarnings, mtlErrors;
+        tinyobj::LoadMtl(matMap, materials, &in, &mtlWarnings, &mtlErrors);
+        for (const std::string* text : {&mtlErrors, &mtlWarnings})
+            for (const std::string& m : splitMessages(*text)) {
+                const auto [line, message] = splitLineReference(m);
+                m_warnings.push_back({path, line, message});
+            }
         lib.endMaterial = materials->size();
         m_libraries.push_back(std::move(lib));
         return true;
     }
 
-    /// "FILE:LINE" of the statement `keyword` inside material `index`'s block
-    /// (the `newmtl` line when the block has none), for errors about it.
+    /// What tinyobjloader said about the libraries, each at its MTL line.
+    const std::vector<Warning>& warnings() const { return m_warnings; }
+
+    /// FILE and LINE of the first of `keywords` inside material `index`'s
+    /// block (the `newmtl` line when the block has none), for errors about it.
     std::pair<std::string, int> locate(size_t index, const std::string& name,
-                                       const std::string& keyword) const {
+                                       std::initializer_list<const char*> keywords) const {
         for (const Library& lib : m_libraries) {
             if (index < lib.firstMaterial || index >= lib.endMaterial) continue;
             int newmtl = 0, found = 0;
+            bool ended = false;
             forEachStatement(lib.text, [&](const std::string& k, const char* rest,
                                            const char* eol, int line) {
-                if (found) return;
+                if (found || ended) return;
                 if (k == "newmtl") {
                     if (newmtl) {
-                        found = newmtl;  // the block ended without `keyword`
+                        ended = true;  // the block ended without any of `keywords`
                         return;
                     }
-                    std::istringstream args(std::string(rest, eol));
-                    std::string n;
-                    if (args >> n && n == name) newmtl = line;
-                } else if (newmtl && k == keyword) {
-                    found = line;
+                    // The name as tinyobjloader takes it: the rest of the
+                    // line after one blank, without trailing blanks.
+                    std::string n(rest < eol ? rest + 1 : eol, eol);
+                    while (!n.empty() && (n.back() == ' ' || n.back() == '\t' || n.back() == '\r'))
+                        n.pop_back();
+                    if (n == name) newmtl = line;
+                    return;
                 }
+                if (newmtl)
+                    for (const char* kw : keywords)
+                        if (k == kw) found = line;
             });
             return {lib.path, found ? found : newmtl};
         }
@@ -459,6 +538,7 @@ public:
 private:
     std::string m_objPath;
     std::vector<Library> m_libraries;
+    std::vector<Warning> m_warnings;
 };
 
 Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
@@ -466,6 +546,11 @@ Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
 /// The MTL -> Whitted mapping documented in obj_loader.h.
 Material materialFromMtl(const tinyobj::material_t& m, size_t index,
                          const MtlLibraryReader& libraries, Warnings& warn) {
+    // Warnings and errors point at the MTL statement they are about.
+    const auto note = [&](std::initializer_list<const char*> keywords, const std::string& what) {
+        const auto [file, line] = libraries.locate(index, m.name, keywords);
+        warn.add("material '" + m.name + "': " + what, line, file);
+    };
     Material out;
     out.name = m.name;
     out.ka = colorOf(m.ambient);
@@ -474,8 +559,7 @@ Material materialFromMtl(const tinyobj::material_t& m, size_t index,
     out.shininess = m.shininess;
     int illum = m.illum;
     if (illum < 0 || illum > 10) {
-        warn.add("material '" + m.name + "': illum " + std::to_string(illum) +
-                 " is unknown; read as illum 2");
+        note({"illum"}, "illum " + std::to_string(illum) + " is unknown; read as illum 2");
         illum = 2;
     }
     if (illum == 0) out.ka = Color(0);
@@ -485,26 +569,34 @@ Material materialFromMtl(const tinyobj::material_t& m, size_t index,
         const Color tf = colorOf(m.transmittance);
         out.kt = !tf.isBlack() ? tf : Color(1.0 - double(m.dissolve));
     } else if (m.dissolve < 1) {
-        warn.add("material '" + m.name + "': dissolve d < 1 is ignored with illum " +
-                 std::to_string(illum) + " (transparency needs illum 4, 6 or 7)");
+        note({"d", "Tr"}, "dissolve d < 1 is ignored with illum " + std::to_string(illum) +
+                              " (transparency needs illum 4, 6 or 7)");
     }
     out.ior = m.ior > 0 ? m.ior : 1.0;
     if (!m.diffuse_texname.empty() || !m.specular_texname.empty() || !m.bump_texname.empty() ||
         !m.ambient_texname.empty() || !m.alpha_texname.empty())
-        warn.add("material '" + m.name + "': texture maps are not supported and are ignored");
+        note({"map_Kd", "map_Ks", "map_Ka", "map_d", "bump", "map_bump"},
+             "texture maps are not supported and are ignored");
 
-    const auto refuse = [&](const std::string& keyword, const std::string& what) {
-        const auto [file, line] = libraries.locate(index, m.name, keyword);
+    const auto refuse = [&](std::initializer_list<const char*> keywords,
+                            const std::string& what) {
+        const auto [file, line] = libraries.locate(index, m.name, keywords);
         return InputError(file, line, "material '" + m.name + "': " + what);
     };
-    const std::pair<const Color*, const char*> colours[] = {
-        {&out.ka, "Ka"}, {&out.kd, "Kd"}, {&out.ks, "Ks"}, {&out.km, "Ks"}, {&out.kt, "Tf"}};
-    for (const auto& [c, keyword] : colours)
-        if (!c->isFinite() || c->r < 0 || c->g < 0 || c->b < 0)
-            throw refuse(keyword, std::string(keyword) + ": colours must be finite and >= 0");
+    const auto bad = [](const Color& c) { return !c.isFinite() || c.r < 0 || c.g < 0 || c.b < 0; };
+    const char* const colourRule = ": colours must be finite and >= 0";
+    if (bad(out.ka)) throw refuse({"Ka"}, std::string("Ka") + colourRule);
+    if (bad(out.kd)) throw refuse({"Kd"}, std::string("Kd") + colourRule);
+    if (bad(out.ks) || bad(out.km)) throw refuse({"Ks"}, std::string("Ks") + colourRule);
+    // The transmission comes from Tf (or Kt), else from 1 - dissolve (d, Tr).
+    if (bad(out.kt)) {
+        if (!colorOf(m.transmittance).isBlack())
+            throw refuse({"Tf", "Kt"}, std::string("Tf") + colourRule);
+        throw refuse({"d", "Tr"}, "the dissolve d (or 1 - Tr) must be in [0, 1]");
+    }
     if (!(out.shininess >= 0 && std::isfinite(out.shininess)))
-        throw refuse("Ns", "Ns must be finite and >= 0");
-    if (!std::isfinite(out.ior)) throw refuse("Ni", "Ni must be finite");
+        throw refuse({"Ns"}, "Ns must be finite and >= 0");
+    if (!std::isfinite(out.ior)) throw refuse({"Ni"}, "Ni must be finite");
     return out;
 }
 
@@ -561,7 +653,8 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     const std::vector<std::string> errors = splitMessages(errText);
     if (!ok) {
         const std::string first = errors.empty() ? "cannot parse the OBJ file" : errors.front();
-        throw InputError(path, lineInMessage(first), first);
+        const auto [line, text] = splitLineReference(first);
+        throw InputError(path, line, text);
     }
     for (const std::string& e : errors) warn.add(e);
 
@@ -585,6 +678,8 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
                                  "vertex " + std::to_string(i + 1) + " is not finite");
 
     ObjModel model;
+    for (const MtlLibraryReader::Warning& w : mtlReader.warnings())
+        warn.add(w.message, w.line, w.path);
     for (size_t i = 0; i < mtls.size(); ++i)
         model.materials.push_back(materialFromMtl(mtls[i], i, mtlReader, warn));
     const uint32_t mtlCount = uint32_t(model.materials.size());

@@ -126,6 +126,20 @@ TEST_CASE("obj: faces with and without normals become two parts") {
     CHECK(scene.objects[0].faceMaterials.empty());  // one material: no per-face table
 }
 
+TEST_CASE("obj: one-value colours and 'd -halo' read as the MTL format defines them") {
+    // tinyobjloader alone reads "Kd 0.5" as (0.5, 0, 0) and "d -halo 0.25" as d = 0.
+    IoTempDir dir;
+    dir.write("m.mtl", "newmtl a\nillum 4\nKd 0.5\nKs 0.25\nd -halo 0.25\nKa 0.125 # c\n");
+    const ObjModel m = loadObj(
+        dir.write("m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+        quiet());
+    REQUIRE(m.materials.size() == 1);
+    CHECK(m.materials[0].kd == Color(0.5, 0.5, 0.5));
+    CHECK(m.materials[0].ks == Color(0.25, 0.25, 0.25));
+    CHECK(m.materials[0].kt == Color(0.75, 0.75, 0.75));  // 1 - d
+    CHECK(m.materials[0].ka == Color(0.125, 0.125, 0.125));
+}
+
 TEST_CASE("obj: MTL illum models map to Whitted materials") {
     IoTempDir dir;
     // Values are exact in float, so the mapping can be checked with ==.

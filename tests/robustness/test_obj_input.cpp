@@ -130,10 +130,36 @@ TEST_CASE("obj: words, missing values, NUL bytes and floats out of range are ref
     rendered("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nvt 0.5\nf 1 2 3\n");
 }
 
-TEST_CASE("obj: tinyobjloader's own warnings keep the line they are about") {
-    const std::string err =
-        rendered("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/5 2/5 3/5\n");
-    CHECK(contains(err, "mesh.obj:5: Vertex texcoord indices out of bounds"));
+TEST_CASE("obj: texture-coordinate indices are checked like the others") {
+    // tinyobjloader only warns, at the file's last line.
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/5 2/5 3/5\n\n\n", 5,
+            "texture coordinate 5 but the file has 1 texture coordinate");
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1/9 2/1/9 3/1/9\n", 5, "normal 9");
+    rendered("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/-1/1 3/1/-1\n");
+}
+
+TEST_CASE("obj: MTL warnings are reported at the MTL's own line") {
+    const std::string err = rendered(
+        "mtllib m.mtl\nusemtl a\n" + kTriangle,
+        {{"m.mtl", "newmtl a\nKd 1 0 0\nd 0.5\nTr 0.5\nmap_Kd wood.png\n"}});
+    CHECK(contains(err, "m.mtl:4: Both `d` and `Tr` parameters defined"));
+    CHECK(contains(err, "m.mtl:3: material 'a': dissolve d < 1 is ignored"));
+    CHECK(contains(err, "m.mtl:5: material 'a': texture maps are not supported"));
+}
+
+TEST_CASE("obj: MTL statements tinyobjloader misreads are read as the MTL format means them") {
+    // "Kd 0.5" is grey (g = b = r), "d -halo 0.25" a dissolve of 0.25: with a
+    // glass-like illum 4, Kd 0.5 grey and kt = 1 - 0.25 load without error,
+    // where "Kd 1 1" (two values) and a dissolve above 1 are refused.
+    rendered("mtllib m.mtl\nusemtl a\n" + kTriangle,
+             {{"m.mtl", "newmtl a\nillum 4\nKd 0.5\nd -halo 0.25\nKa xyz 1 1 1\n"}});
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 2, "'Kd' needs 3 numbers, found 2",
+            {{"m.mtl", "newmtl a\nKd 1 1\n"}}, "m.mtl");
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 3, "dissolve",
+            {{"m.mtl", "newmtl a\nillum 4\nd 1.5\n"}}, "m.mtl");
+    // A material whose name has a blank: located all the same.
+    refused("mtllib m.mtl\nusemtl a\n" + kTriangle, 3, "material 'two words': Kd",
+            {{"m.mtl", "newmtl two words\nKs 1 1 1\nKd -1 0 0\n"}}, "m.mtl");
 }
 
 TEST_CASE("obj: a trailing comment on a vertex line is not a bad coordinate") {
