@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "renderer/io/errors.h"
+#include "renderer/io/text_file.h"
 
 namespace raylab {
 
@@ -95,19 +96,9 @@ private:
 
     /// Rejects encodings we cannot read before the grammar sees them; skips a UTF-8 BOM.
     void checkEncoding() {
-        const size_t n = m_s.size();
+        if (const auto [line, message] = findNonText(m_s, "JSON"); line > 0) fail(line, message);
         auto byte = [&](size_t i) { return static_cast<unsigned char>(m_s[i]); };
-        if (n >= 2 &&
-            ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF)))
-            fail(1, "file starts with a UTF-16 byte-order mark; save it as UTF-8");
-        const size_t nul = m_s.find('\0');
-        if (nul != std::string::npos) {
-            int line = 1;
-            for (size_t i = 0; i < nul; ++i)
-                if (m_s[i] == '\n') ++line;
-            fail(line, "NUL byte in input (binary or UTF-16 file?); save it as UTF-8 text");
-        }
-        if (n >= 3 && byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) m_pos = 3;
+        if (m_s.size() >= 3 && byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) m_pos = 3;
     }
 
     /// Advances over one character, counting "\n", "\r\n" and a lone "\r" as one line break.

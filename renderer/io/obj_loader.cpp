@@ -214,17 +214,17 @@ std::pair<int, std::string> findBadFaceIndex(const std::string& text) {
     // `text` is one index as written (up to the next '/' or the corner's end).
     auto check = [](const std::string& text, long soFar, long total, const char* what,
                     const char* plural) -> std::string {
-        const std::string shown = text.substr(0, 24);
         errno = 0;
         char* end = nullptr;
         const long idx = std::strtol(text.c_str(), &end, 10);
         if (end == text.c_str() || *end != '\0')
-            return std::string("face corner has '") + shown + "' where a " + what +
+            return std::string("face corner has '") + text.substr(0, 24) + "' where a " + what +
                    " index belongs";
         const long resolved = idx > 0 ? idx - 1 : soFar + idx;
         if (errno == ERANGE || idx == 0 || resolved < 0 || resolved >= total)
-            return std::string("face refers to ") + what + " " + shown + " but the file has " +
-                   std::to_string(total) + " " + (total == 1 ? what : plural);
+            return std::string("face refers to ") + what + " " + text.substr(0, 24) +
+                   " but the file has " + std::to_string(total) + " " +
+                   (total == 1 ? what : plural);
         return "";
     };
     long vSoFar = 0, vtSoFar = 0, vnSoFar = 0;
@@ -321,13 +321,14 @@ std::pair<int, std::string> findBadNumber(const std::string& text,
             ++count;
             char* end = nullptr;
             const double x = std::strtod(token.c_str(), &end);
-            const std::string shown = "'" + kw + "': '" + token.substr(0, 40) + "'";
+            // Every v/vn/vt of a mesh passes here: the message is only built for a bad one.
+            const auto shown = [&] { return "'" + kw + "': '" + token.substr(0, 40) + "'"; };
             if (end != token.c_str() + token.size() || !std::isfinite(x)) {
-                bad = {line, shown + " is not a finite number"};
+                bad = {line, shown() + " is not a finite number"};
                 return;
             }
             if (floatRange && std::fabs(x) > double(std::numeric_limits<float>::max())) {
-                bad = {line, shown + " is beyond float range (about 3.4e38)"};
+                bad = {line, shown() + " is beyond float range (about 3.4e38)"};
                 return;
             }
         }
@@ -404,8 +405,8 @@ void addTinyObjWarnings(const std::vector<std::string>& messages, const std::str
             continue;
         }
         // Anything else is passed on, at the line tinyobjloader names in it.
-        const auto [line, text] = splitLineReference(m);
-        warn.add(text, line);
+        const auto [line, message] = splitLineReference(m);
+        warn.add(message, line);
     }
 }
 
@@ -653,8 +654,8 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     const std::vector<std::string> errors = splitMessages(errText);
     if (!ok) {
         const std::string first = errors.empty() ? "cannot parse the OBJ file" : errors.front();
-        const auto [line, text] = splitLineReference(first);
-        throw InputError(path, line, text);
+        const auto [line, message] = splitLineReference(first);
+        throw InputError(path, line, message);
     }
     for (const std::string& e : errors) warn.add(e);
 
