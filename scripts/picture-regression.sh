@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Renders every picture the project promises to keep with two raylab binaries
+# and compares them: the RGBA layers with `raylab compare` (exit 0 only when
+# bit-identical) and the whole EXR files byte for byte (AOV layers included).
+# A developer's check before landing a change that must not change pictures.
+#
+#   scripts/picture-regression.sh OLD_RAYLAB NEW_RAYLAB [WORKDIR]
+#
+# Scenes: scenes/*.json, the bare OBJ meshes in scenes/meshes, and, when
+# ../shared is present, every SPD scene (with and without --spd, Embree at
+# full size and the naive loop at 96x96) and the shared OBJ models.
+# Extra flags for every render can be given in RAYLAB_FLAGS (e.g. --threads 2).
+set -uo pipefail
+old=$(realpath "$1"); new=$(realpath "$2")
+top=$(cd "$(dirname "$0")/.." && pwd)
+work=${3:-$(mktemp -d)}
+mkdir -p "$work/old" "$work/new"
+shared="$top/../shared"
+flags=${RAYLAB_FLAGS:-}
+
+cases=()   # "name|scene|flags"
+for s in "$top"/scenes/*.json; do
+  n=$(basename "$s" .json)
+  cases+=("$n|$s|" "${n}_naive|$s|--accel naive --width 160 --height 120"
+          "${n}_float|$s|--precision float" "${n}_eps|$s|--epsilon 1e-4 --robust --bvh-quality high")
+done
+for s in "$top"/scenes/meshes/*.obj; do
+  n=$(basename "$s" .obj)
+  cases+=("obj_$n|$s|--width 320 --height 240" "obj_${n}_naive|$s|--accel naive --width 96 --height 72")
+done
+if [[ -d "$shared/scenes/spd" ]]; then
+  for s in "$shared"/scenes/spd/*.nff; do
+    n=$(basename "$s" .nff)
+    cases+=("spd_$n|$s|--spd" "nff_$n|$s|" "spd_${n}_naive|$s|--spd --accel naive --width 96 --height 96")
+  done
+  for n in gears teapot; do
+    s="$shared/scenes/spd/$n.nff"
+    [[ -f "$s" ]] || continue
+    cases+=("nff_${n}_projected|$s|--polygons projected --width 256 --height 256"
+            "nff_${n}_triangles|$s|--polygons triangles --width 256 --height 256"
+            "nff_${n}_float|$s|--precision float --width 256 --height 256")
+  done
+fi
+if [[ -d "$shared/models" ]]; then
+  for s in "$shared"/models/*.obj "$shared"/models/spot/*.obj; do
+    [[ -f "$s" ]] || continue
+    n=$(basename "$s" .obj)
+    cases+=("model_$n|$s|--width 320 --height 240")
+  done
+fi
+
+differ=0
+printf '%-28s %-10s %-8s %s\n' case rgba exr-bytes flags
+for c in "${cases[@]}"; do
+  IFS='|' read -r name scene extra <<<"$c"
+  for side in old new; do
+    bin=$old; [[ $side == new ]] && bin=$new
+    # Same relative output name on both sides, so headers that record it match.
+    (cd "$work/$side" && "$bin" render "$scene" -o "$name.exr" --quiet $extra $flags \
+        >"$name.log" 2>&1) || echo "render failed: $side $name (see $work/$side/$name.log)"
+  done
+  if "$new" compare "$work/old/$name.exr" "$work/new/$name.exr" >"$work/new/$name.compare" 2>&1; then
+    rgba=identical
+  else
+    rgba=DIFFERENT; differ=1
+  fi
+  if cmp -s "$work/old/$name.exr" "$work/new/$name.exr"; then bytes=same; else bytes=differ; fi
+  printf '%-28s %-10s %-8s %s\n' "$name" "$rgba" "$bytes" "$extra"
+done
+echo "renders and compare output in $work"
+exit $differ
