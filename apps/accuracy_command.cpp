@@ -1,4 +1,4 @@
-// raylab accuracy: what accuracy costs in time (renderer/accuracy/ does the work).
+// raylab accuracy: what accuracy costs in time (tools/accuracy/ does the work).
 
 #include <unistd.h>
 
@@ -12,13 +12,13 @@
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
 #include "apps/progress_bar.h"
-#include "renderer/accuracy/accuracy_report.h"
-#include "renderer/accuracy/accuracy_sweep.h"
-#include "renderer/bench/bench_util.h"
-#include "renderer/bench/svg_plot.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "tools/accuracy/accuracy_report.h"
+#include "tools/accuracy/accuracy_sweep.h"
+#include "tools/report/bench_util.h"
+#include "tools/report/svg_plot.h"
 
 namespace raylab {
 

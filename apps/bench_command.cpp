@@ -8,11 +8,11 @@
 
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
-#include "renderer/bench/accel_bench.h"
-#include "renderer/bench/effects_bench.h"
-#include "renderer/bench/limit_bench.h"
-#include "renderer/bench/primitive_bench.h"
 #include "renderer/io/errors.h"
+#include "tools/bench/accel_bench.h"
+#include "tools/bench/effects_bench.h"
+#include "tools/bench/limit_bench.h"
+#include "tools/bench/primitive_bench.h"
 
 namespace raylab {
 

@@ -11,9 +11,9 @@
 #include <sstream>
 #include <string>
 
-#include "renderer/bench/accel_bench.h"
-#include "renderer/bench/limit_bench.h"
 #include "renderer/io/errors.h"
+#include "tools/bench/accel_bench.h"
+#include "tools/bench/limit_bench.h"
 
 using namespace raylab;
 

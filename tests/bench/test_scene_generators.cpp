@@ -10,11 +10,11 @@
 
 #include "geometry/sphere.h"
 #include "renderer/accel/accelerator.h"
-#include "renderer/bench/scene_generators.h"
 #include "renderer/effects.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "tools/bench/scene_generators.h"
 
 using namespace raylab;
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/bench/svg_plot.h"
+#include "tools/report/svg_plot.h"
 
 using namespace raylab;
 

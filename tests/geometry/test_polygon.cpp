@@ -447,7 +447,7 @@ TEST_CASE("polygon: closed cube of quads, rays from inside through edges and cor
 TEST_CASE("polygon: timing of the two inside tests (reported)") {
     // ns per intersect() on a 4-vertex quad and a 144-vertex concave gear-like face
     // (18 teeth, like SPD gears); the same 1000 rays for both tests. Indicative only:
-    // renderer/bench/primitive_bench.cpp (raylab bench primitives) is the real measurement.
+    // tools/bench/primitive_bench.cpp (raylab bench primitives) is the real measurement.
     std::vector<Vec3> gear;
     for (int i = 0; i < 144; ++i) {
         const double a = 2 * kPi * i / 144;

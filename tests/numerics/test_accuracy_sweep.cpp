@@ -1,4 +1,4 @@
-// The accuracy sweep engine (renderer/accuracy/) and the `raylab accuracy`
+// The accuracy sweep engine (tools/accuracy/) and the `raylab accuracy`
 // front end: visible-difference counting, the Pareto front, the settings
 // table, a tiny end-to-end sweep and the outputs.
 
@@ -11,10 +11,10 @@
 
 #include "cli/cli_helpers.h"
 #include "numerics/numerics_helpers.h"
-#include "renderer/accuracy/accuracy_report.h"
-#include "renderer/accuracy/accuracy_sweep.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
+#include "tools/accuracy/accuracy_report.h"
+#include "tools/accuracy/accuracy_sweep.h"
 
 using namespace raylab;
 using namespace raylab::numerics_test;

@@ -15,9 +15,9 @@
 
 #include "numerics/numerics_helpers.h"
 #include "renderer/accel/embree_accelerator.h"
-#include "renderer/accuracy/accuracy_sweep.h"
 #include "renderer/image_compare.h"
 #include "renderer/io/scene_loader.h"
+#include "tools/accuracy/accuracy_sweep.h"
 
 using namespace raylab;
 using namespace raylab::numerics_test;

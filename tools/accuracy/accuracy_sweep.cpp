@@ -1,4 +1,4 @@
-#include "renderer/accuracy/accuracy_sweep.h"
+#include "tools/accuracy/accuracy_sweep.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,7 +11,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "renderer/bench/bench_util.h"
 #include "renderer/effects.h"
 #include "renderer/image_compare.h"
 #include "renderer/io/errors.h"
@@ -19,6 +18,7 @@
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
 #include "renderer/timing.h"
+#include "tools/report/bench_util.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "renderer/bench/limit_bench.h"
+#include "tools/bench/limit_bench.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -15,14 +15,14 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/accel/ray_recorder.h"
-#include "renderer/bench/bench_util.h"
-#include "renderer/bench/embree_replay.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "tools/bench/embree_replay.h"
+#include "tools/report/bench_util.h"
 
 namespace raylab {
 

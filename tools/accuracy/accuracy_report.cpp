@@ -1,4 +1,4 @@
-#include "renderer/accuracy/accuracy_report.h"
+#include "tools/accuracy/accuracy_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/bench/bench_util.h"
 #include "renderer/image_compare.h"
+#include "tools/report/bench_util.h"
 
 namespace raylab {
 

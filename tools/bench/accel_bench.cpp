@@ -1,4 +1,4 @@
-#include "renderer/bench/accel_bench.h"
+#include "tools/bench/accel_bench.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -20,9 +20,6 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/accel/embree_accelerator.h"
-#include "renderer/bench/bench_util.h"
-#include "renderer/bench/scene_generators.h"
-#include "renderer/bench/svg_plot.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
@@ -30,6 +27,9 @@
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
 #include "renderer/whitted_integrator.h"
+#include "tools/bench/scene_generators.h"
+#include "tools/report/bench_util.h"
+#include "tools/report/svg_plot.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "renderer/bench/bench_util.h"
+#include "tools/report/bench_util.h"
 
 #include <tbb/info.h>
 

@@ -1,4 +1,4 @@
-#include "renderer/bench/scene_generators.h"
+#include "tools/bench/scene_generators.h"
 
 #include <algorithm>
 #include <array>

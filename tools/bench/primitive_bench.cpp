@@ -1,4 +1,4 @@
-#include "renderer/bench/primitive_bench.h"
+#include "tools/bench/primitive_bench.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "renderer/bench/effects_bench.h"
+#include "tools/bench/effects_bench.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "renderer/bench/embree_replay.h"
+#include "tools/bench/embree_replay.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>

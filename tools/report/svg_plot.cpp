@@ -1,4 +1,4 @@
-#include "renderer/bench/svg_plot.h"
+#include "tools/report/svg_plot.h"
 
 #include <algorithm>
 #include <cmath>

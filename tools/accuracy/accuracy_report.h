@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "renderer/accuracy/accuracy_sweep.h"
-#include "renderer/bench/svg_plot.h"
+#include "tools/accuracy/accuracy_sweep.h"
+#include "tools/report/svg_plot.h"
 
 namespace raylab {
 
