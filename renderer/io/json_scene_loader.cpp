@@ -283,7 +283,7 @@ Scene SceneReader::read(const JsonValue& root) {
              std::string("a scene file must be a JSON object ({...}), got ") + root.typeName());
     const Fields top(
         *this, root, "", "a scene",
-        // "camera_path" (--frames sequences) is read by renderer/distributed/camera_path.cpp.
+        // "camera_path" (--frames sequences) is read by distributed/camera_path.cpp.
         {"image", "render", "camera", "background", "ambient", "lights", "materials", "objects",
          "camera_path"});
     if (const JsonValue* v = top.get("image")) readImage(*v, "image");

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "renderer/distributed/camera_path.h"
-#include "renderer/distributed/frame_sequence.h"
+#include "distributed/camera_path.h"
+#include "distributed/frame_sequence.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
 

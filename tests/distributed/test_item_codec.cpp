@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "distributed_test_helpers.h"
-#include "renderer/distributed/item_codec.h"
+#include "distributed/item_codec.h"
 
 using namespace raylab;
 

@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "distributed_test_helpers.h"
-#include "renderer/distributed/mpi_render.h"
-#include "renderer/distributed/mpi_session.h"
+#include "distributed/mpi_render.h"
+#include "distributed/mpi_session.h"
 
 using namespace raylab;
 

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "renderer/distributed/work_schedule.h"
+#include "distributed/work_schedule.h"
 
 using namespace raylab;
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/distributed/mpi_session.h"
+#include "distributed/mpi_session.h"
 #include "renderer/render.h"
 
 namespace raylab {

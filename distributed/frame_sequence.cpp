@@ -1,4 +1,4 @@
-#include "renderer/distributed/frame_sequence.h"
+#include "distributed/frame_sequence.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "renderer/distributed/work_schedule.h"
+#include "distributed/work_schedule.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 
 #include "geometry/vec.h"
 #include "renderer/camera.h"
-#include "renderer/distributed/frame_sequence.h"
+#include "distributed/frame_sequence.h"
 #include "renderer/io/json.h"
 #include "renderer/scene.h"
 

@@ -1,4 +1,4 @@
-#include "renderer/distributed/camera_path.h"
+#include "distributed/camera_path.h"
 
 #include <algorithm>
 #include <cmath>

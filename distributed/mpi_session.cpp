@@ -1,4 +1,4 @@
-#include "renderer/distributed/mpi_session.h"
+#include "distributed/mpi_session.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "renderer/distributed/item_codec.h"
+#include "distributed/item_codec.h"
 
 #include <cassert>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "renderer/distributed/mpi_render.h"
+#include "distributed/mpi_render.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -20,8 +20,8 @@
 #include <list>
 #include <mutex>
 
-#include "renderer/distributed/item_codec.h"
-#include "renderer/distributed/work_schedule.h"
+#include "distributed/item_codec.h"
+#include "distributed/work_schedule.h"
 #include "renderer/timing.h"
 
 // The C API only (no deprecated C++ bindings and their warnings).

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "renderer/distributed/byte_buffer.h"
+#include "distributed/byte_buffer.h"
 #include "renderer/render.h"
 
 namespace raylab {
