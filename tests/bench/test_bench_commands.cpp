@@ -69,7 +69,6 @@ TEST_CASE("bench accel: invalid options are rejected before any measurement") {
     o.plotPath = "plot.png";
     CHECK_THROWS_AS(runAccelBench(o, out), UsageError);
     CHECK(out.str().empty());  // nothing ran
-    CHECK(std::string(kBenchAccelHelp).rfind("usage: raylab bench accel", 0) == 0);
 }
 
 TEST_CASE("bench limit: invalid options are rejected") {
@@ -82,7 +81,6 @@ TEST_CASE("bench limit: invalid options are rejected") {
     o.runs = 1;
     o.outPath = "limit.xml";
     CHECK_THROWS_AS(runLimitBench(o, out), UsageError);
-    CHECK(std::string(kBenchLimitHelp).rfind("usage: raylab bench limit", 0) == 0);
 }
 
 TEST_CASE("bench limit: a tiny run records, replays and reports") {

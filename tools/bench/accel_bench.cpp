@@ -33,30 +33,6 @@
 
 namespace raylab {
 
-const char* const kBenchAccelHelp =
-    "usage: raylab bench accel [SCENE...] [options]\n"
-    "\n"
-    "Compares the Embree BVH with the naive loop over every primitive on the same rays (same\n"
-    "scene, same render options, one ray per pixel centre), for growing sizes of four procedural\n"
-    "scenes (sphereflake levels 0-5, random spheres, a height-field mesh, a polygon field) and\n"
-    "then for every SCENE given (.json, .obj, .nff). Reports the primitive count, build time,\n"
-    "frame time and rays/s of both back ends, the speedup (ratio of rays/s), and per scene family\n"
-    "the size below which the naive loop is faster. Times are medians of --runs runs. Embree\n"
-    "always renders the full frame; where a naive frame would take longer than --naive-budget,\n"
-    "the naive loop traces every k-th pixel only (row-major, k coprime with the width) and the\n"
-    "table says \"1/k\". Frame times are wall-clock, or with --threads 1 the working thread's\n"
-    "CPU time (robust on a shared machine). The default run takes about 3 minutes on 2 cores.\n"
-    "\n"
-    "options:\n"
-    "  --width W, --height H   image size (default 256x256)\n"
-    "  --runs N                timed runs per measurement, median reported (default 5)\n"
-    "  --threads N             worker threads (default: all cores)\n"
-    "  --naive-budget S        longest naive frame in seconds before pixel sampling (default 2)\n"
-    "  --out FILE              also write the results as CSV (.csv) or JSON (.json)\n"
-    "  --plot FILE.svg         log-log plot: time per ray against primitive count, both back ends\n"
-    "  --quick                 smoke run of about 20 s: small sizes, at most 128x128, 3 runs,\n"
-    "                          0.5 s naive budget\n";
-
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -40,7 +40,4 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out);
 ///   vertical stripes.
 size_t pixelSampleStride(size_t minStride, int width);
 
-/// Help text of `raylab bench accel`.
-extern const char* const kBenchAccelHelp;
-
 }  // namespace raylab

@@ -13,14 +13,6 @@
 
 namespace raylab {
 
-const char* const kBenchEffectsHelp =
-    "usage: raylab bench effects SCENE... [--width W --height H --runs N --threads N --spd]\n"
-    "\n"
-    "Renders each scene with the specialised kernel (only the effects the scene calls for) and with\n"
-    "the general kernel (every ray type at every hit, zero weights included: --effects all), runs\n"
-    "interleaved, and prints the median render times, the rays traced and the speedup. The two\n"
-    "images are checked to be bit-identical.\n";
-
 namespace {
 
 double median(std::vector<double> v) {

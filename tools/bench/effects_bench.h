@@ -17,8 +17,6 @@ struct EffectsBenchOptions {
     bool spd = false;
 };
 
-extern const char* const kBenchEffectsHelp;
-
 /// Prints a table (scene, effects, time and rays for both kernels, speedup);
 /// returns the exit code.
 int runEffectsBench(const EffectsBenchOptions& options, std::ostream& out);

@@ -26,25 +26,6 @@
 
 namespace raylab {
 
-const char* const kBenchLimitHelp =
-    "usage: raylab bench limit SCENE [options]\n"
-    "\n"
-    "How close the renderer comes to Embree's own speed on SCENE. Records every ray one render\n"
-    "traces (camera, shadow, reflection, refraction), replays exactly those rays through bare\n"
-    "rtcIntersect1/rtcOccluded1 on the same Embree scene (same float conversion, mask and\n"
-    "context; no shading), and reports the renderer's rays/s (separate, un-recorded renders) as a\n"
-    "fraction of the replay's. A replay through the Accelerator interface splits the gap into\n"
-    "query overhead and shading. Performance bar: renderer >= 70% of bare Embree. Times are\n"
-    "medians of --runs runs.\n"
-    "\n"
-    "options:\n"
-    "  --width W, --height H   image size (default: the scene's; 512x512 with --spd)\n"
-    "  --spd                   Haines' SPD procedure: 513x513 corner rays, depth 5\n"
-    "  --runs N                timed runs of each measurement, median reported (default 5)\n"
-    "  --threads N             threads of the render and of the replays (default 1;\n"
-    "                          0 = all cores)\n"
-    "  --out FILE              also write the results as CSV (.csv) or JSON (.json)\n";
-
 namespace {
 
 using Clock = std::chrono::steady_clock;

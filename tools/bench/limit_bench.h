@@ -33,7 +33,4 @@ constexpr double kLimitBenchBar = 0.70;
 ///   or output path.
 int runLimitBench(const LimitBenchOptions& options, std::ostream& out);
 
-/// Help text of `raylab bench limit`.
-extern const char* const kBenchLimitHelp;
-
 }  // namespace raylab
