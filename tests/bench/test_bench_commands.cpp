@@ -5,34 +5,16 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <numeric>
 #include <sstream>
 #include <string>
 
 #include "renderer/io/errors.h"
+#include "support/temp_dir.h"
 #include "tools/bench/accel_bench.h"
 #include "tools/bench/limit_bench.h"
 
 using namespace raylab;
-
-namespace {
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::filesystem::path tempDir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("raylab_test_bench_" + name);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-}  // namespace
 
 TEST_CASE("pixel sample stride: smallest k >= requested that is coprime with the width") {
     CHECK(pixelSampleStride(1, 256) == 1);
@@ -84,9 +66,9 @@ TEST_CASE("bench limit: invalid options are rejected") {
 }
 
 TEST_CASE("bench limit: a tiny run records, replays and reports") {
-    const auto dir = tempDir("limit");
-    const std::string json = (dir / "limit.json").string();
-    const std::string csv = (dir / "limit.csv").string();
+    const test::TempDir dir;
+    const std::string json = dir.file("limit.json");
+    const std::string csv = dir.file("limit.csv");
     LimitBenchOptions o;
     o.scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json";
     o.width = 24;
@@ -101,7 +83,7 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     CHECK(report.find("disagrees with the recorded hit/miss on 0 rays (interface replay: 0)") !=
           std::string::npos);
     CHECK(report.find("bare Embree replay") != std::string::npos);
-    const std::string doc = readFile(json);
+    const std::string doc = test::readFile(json);
     CHECK(doc.find("\"recording_matches_counters\": true") != std::string::npos);
     CHECK(doc.find("\"replay_disagreements\": 0") != std::string::npos);
     // demo.json at spp 4: 24·18·4 camera rays.
@@ -111,8 +93,7 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     o.threads = 2;
     std::ostringstream out2;
     CHECK(runLimitBench(o, out2) == 0);
-    const std::string table = readFile(csv);
+    const std::string table = test::readFile(csv);
     CHECK(table.rfind("scene,width,height,spd,threads", 0) == 0);
     CHECK(std::count(table.begin(), table.end(), '\n') == 2);  // header + one row
-    std::filesystem::remove_all(dir);
 }

@@ -74,7 +74,7 @@ TEST_CASE("cli: a render writes EXR, PNG and stats, and prints a summary") {
     CHECK(r.exitCode == 0);
     CHECK(fs::file_size(dir.file("a.exr")) > 0);
     CHECK(fs::file_size(dir.file("a.png")) > 0);
-    const std::string stats = cli::slurp(dir.file("a.json"));
+    const std::string stats = cli::readFile(dir.file("a.json"));
     for (const char* key : {"\"rays\"", "\"camera\"", "\"shadow\"", "\"reflection\"", "\"refraction\"",
                             "\"camera_hits\"", "\"time_s\"", "\"parse\"", "\"build\"", "\"render\"",
                             "\"primitives\"", "\"effects\"", "\"threads\"", "\"accel\""})
@@ -83,7 +83,7 @@ TEST_CASE("cli: a render writes EXR, PNG and stats, and prints a summary") {
     CHECK(r.out.find("Mrays/s") != std::string::npos);
     // No temporary files are left beside the outputs.
     int files = 0;
-    for (const auto& e : fs::directory_iterator(dir.path)) files += e.is_regular_file();
+    for (const auto& e : fs::directory_iterator(dir.path())) files += e.is_regular_file();
     CHECK(files == 4);  // tiny.json, a.exr, a.png, a.json
 
     const cli::Result quiet = cli::run("render " + scene + " -o " + dir.file("b.exr") + " --quiet");
@@ -105,13 +105,13 @@ TEST_CASE("cli: the same render is byte-identical for 1 and 2 threads and across
     };
     render("1", "--threads 1");
     render("2", "--threads 2");
-    CHECK(cli::slurp(dir.file("1.png")) == cli::slurp(dir.file("2.png")));
+    CHECK(cli::readFile(dir.file("1.png")) == cli::readFile(dir.file("2.png")));
     const cli::Result c = cli::run("compare " + dir.file("1.exr") + " " + dir.file("2.exr"));
     CHECK(c.exitCode == 0);
     CHECK(c.out.find("(100.0000%)") != std::string::npos);
-    const std::string first = cli::slurp(dir.file("2.exr"));
+    const std::string first = cli::readFile(dir.file("2.exr"));
     render("2", "--threads 2");
-    CHECK(cli::slurp(dir.file("2.exr")) == first);
+    CHECK(cli::readFile(dir.file("2.exr")) == first);
 }
 
 TEST_CASE("cli: compare reports identical and differing renders; --polygons triangles") {

@@ -5,18 +5,15 @@
 
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "distributed_test_helpers.h"
 #include "renderer/io/exr_reader.h"
+#include "support/run_command.h"
+#include "support/temp_dir.h"
 
 using namespace raylab;
 
@@ -24,50 +21,9 @@ namespace {
 
 const auto kWithMpirun = doctest::skip(std::getenv("RAYLAB_MPIRUN") == nullptr);
 
-struct Run {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
-/// A scratch directory, removed at the end of the test case.
-class Scratch {
-public:
-    Scratch() {
-        static std::atomic<int> counter{0};
-        m_dir = std::filesystem::temp_directory_path() /
-                ("raylab_mpi_cli_" + std::to_string(long(getpid())) + "_" +
-                 std::to_string(counter++));
-        std::filesystem::remove_all(m_dir);
-        std::filesystem::create_directories(m_dir);
-    }
-    ~Scratch() {
-        std::error_code ec;
-        std::filesystem::remove_all(m_dir, ec);
-    }
-    std::string operator()(const std::string& name) const { return (m_dir / name).string(); }
-
-    /// Runs `command` through the shell, capturing its exit code and output.
-    Run run(const std::string& command) const {
-        const std::string cmd = command + " >" + (*this)("stdout") + " 2>" + (*this)("stderr") +
-                                " </dev/null";
-        const int status = std::system(cmd.c_str());
-        Run r;
-        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp((*this)("stdout"));
-        r.err = slurp((*this)("stderr"));
-        return r;
-    }
-
-private:
-    std::filesystem::path m_dir;
-};
+using Run = test::CommandResult;
+using test::readFile;
+using test::runCommand;
 
 std::string raylabBinary() { return RAYLAB_BINARY; }
 
@@ -124,19 +80,19 @@ const char* const kPathScene = R"({
 }  // namespace
 
 TEST_CASE("mpirun cli: the demo image, PNG and ray counts equal one process" * kWithMpirun) {
-    const Scratch dir;
+    const test::TempDir dir;
     const std::string flags = " --width 96 --height 72 --spp 2 --float ";
-    const Run one = dir.run(raylabBinary() + " render " + demo() + flags + "--threads 2 -o " +
-                            dir("one.exr") + " --png " + dir("one.png") + " --stats " +
-                            dir("one.json") + " --quiet");
+    const Run one = runCommand(raylabBinary() + " render " + demo() + flags + "--threads 2 -o " +
+                               dir.file("one.exr") + " --png " + dir.file("one.png") + " --stats " +
+                               dir.file("one.json") + " --quiet");
     REQUIRE_MESSAGE(one.exitCode == 0, one.err);
-    const Run two = dir.run(mpirunRaylab(2) + " render " + demo() + flags + "--threads 1 -o " +
-                            dir("two.exr") + " --png " + dir("two.png") + " --stats " +
-                            dir("two.json"));
+    const Run two = runCommand(mpirunRaylab(2) + " render " + demo() + flags + "--threads 1 -o " +
+                               dir.file("two.exr") + " --png " + dir.file("two.png") + " --stats " +
+                               dir.file("two.json"));
     REQUIRE_MESSAGE(two.exitCode == 0, two.err);
-    checkSameExr(dir("one.exr"), dir("two.exr"));
-    CHECK(slurp(dir("one.png")) == slurp(dir("two.png")));
-    CHECK(rayStats(slurp(dir("one.json"))) == rayStats(slurp(dir("two.json"))));
+    checkSameExr(dir.file("one.exr"), dir.file("two.exr"));
+    CHECK(readFile(dir.file("one.png")) == readFile(dir.file("two.png")));
+    CHECK(rayStats(readFile(dir.file("one.json"))) == rayStats(readFile(dir.file("two.json"))));
     // One summary (rank 0's) with the per-rank table; 96x72 pixels = 6x5 tiles.
     CHECK(two.out.find("ranks:    2 ranks, 30 tiles") != std::string::npos);
     CHECK(two.out.find("rank 1 (") != std::string::npos);
@@ -144,84 +100,85 @@ TEST_CASE("mpirun cli: the demo image, PNG and ray counts equal one process" * k
 }
 
 TEST_CASE("mpirun cli: an SPD render equals one process" * kWithMpirun) {
-    const Scratch dir;
+    const test::TempDir dir;
     std::string scene = std::string(RAYLAB_SHARED_DIR) + "/scenes/spd/balls_s2.nff";
     if (!std::filesystem::exists(scene)) {
-        scene = dir("spd.nff");
+        scene = dir.file("spd.nff");
         std::ofstream(scene) << "v\nfrom 0 1 -6\nat 0 0.5 0\nup 0 1 0\nangle 40\nhither 0.01\n"
                                 "resolution 64 64\nb 0.1 0.2 0.3\nl 3 5 -4\n"
                                 "f 0.9 0.2 0.2 0.6 0.4 20 0 1\ns -1 0.5 0 0.5\n"
                                 "f 0.8 0.8 0.9 0.1 0.6 100 0.8 1.5\ns 0.8 0.6 0.2 0.6\n";
     }
     const std::string flags = " --spd --width 64 --height 64 --float --quiet ";
-    const Run one = dir.run(raylabBinary() + " render " + scene + flags + "-o " + dir("one.exr") +
-                            " --stats " + dir("one.json"));
+    const Run one = runCommand(raylabBinary() + " render " + scene + flags + "-o " +
+                               dir.file("one.exr") + " --stats " + dir.file("one.json"));
     REQUIRE_MESSAGE(one.exitCode == 0, one.err);
-    const Run two = dir.run(mpirunRaylab(2) + " render " + scene + flags + "--threads 1 -o " +
-                            dir("two.exr") + " --stats " + dir("two.json"));
+    const Run two = runCommand(mpirunRaylab(2) + " render " + scene + flags + "--threads 1 -o " +
+                               dir.file("two.exr") + " --stats " + dir.file("two.json"));
     REQUIRE_MESSAGE(two.exitCode == 0, two.err);
-    checkSameExr(dir("one.exr"), dir("two.exr"));
-    CHECK(rayStats(slurp(dir("one.json"))) == rayStats(slurp(dir("two.json"))));
+    checkSameExr(dir.file("one.exr"), dir.file("two.exr"));
+    CHECK(rayStats(readFile(dir.file("one.json"))) == rayStats(readFile(dir.file("two.json"))));
 }
 
 TEST_CASE("mpirun cli: --frames writes a numbered sequence equal to one process" * kWithMpirun) {
-    const Scratch dir;
-    std::ofstream(dir("path.json")) << kPathScene;
-    const std::string args = " render " + dir("path.json") + " --frames 1:3 --float --quiet ";
-    const Run one = dir.run(raylabBinary() + args + "-o " + dir("one.exr"));
+    const test::TempDir dir;
+    std::ofstream(dir.file("path.json")) << kPathScene;
+    const std::string args = " render " + dir.file("path.json") + " --frames 1:3 --float --quiet ";
+    const Run one = runCommand(raylabBinary() + args + "-o " + dir.file("one.exr"));
     REQUIRE_MESSAGE(one.exitCode == 0, one.err);
-    const Run two = dir.run(mpirunRaylab(2) + args + "--threads 1 -o " + dir("two.exr") +
-                            " --png " + dir("two.png"));
+    const Run two = runCommand(mpirunRaylab(2) + args + "--threads 1 -o " + dir.file("two.exr") +
+                               " --png " + dir.file("two.png"));
     REQUIRE_MESSAGE(two.exitCode == 0, two.err);
     for (const char* n : {"_0001", "_0002", "_0003"}) {
-        checkSameExr(dir(std::string("one") + n + ".exr"), dir(std::string("two") + n + ".exr"));
-        CHECK(std::filesystem::exists(dir(std::string("two") + n + ".png")));
+        checkSameExr(dir.file(std::string("one") + n + ".exr"),
+                     dir.file(std::string("two") + n + ".exr"));
+        CHECK(std::filesystem::exists(dir.file(std::string("two") + n + ".png")));
     }
-    CHECK_FALSE(std::filesystem::exists(dir("two.exr")));
-    CHECK_FALSE(std::filesystem::exists(dir("two_0004.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir.file("two.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir.file("two_0004.exr")));
     // The camera moves: the first and last frames differ.
-    CHECK(test::filmDifference(readExr(dir("two_0001.exr")), readExr(dir("two_0003.exr"))) ==
-          "rgba");
+    CHECK(test::filmDifference(readExr(dir.file("two_0001.exr")),
+                               readExr(dir.file("two_0003.exr"))) == "rgba");
     // A single frame of the sequence renders the same picture on its own.
-    const Run single = dir.run(raylabBinary() + " render " + dir("path.json") +
-                               " --frames 2 --float --quiet -o " + dir("single.exr"));
+    const Run single = runCommand(raylabBinary() + " render " + dir.file("path.json") +
+                                  " --frames 2 --float --quiet -o " + dir.file("single.exr"));
     REQUIRE_MESSAGE(single.exitCode == 0, single.err);
-    checkSameExr(dir("single_0002.exr"), dir("two_0002.exr"));
+    checkSameExr(dir.file("single_0002.exr"), dir.file("two_0002.exr"));
 }
 
 TEST_CASE("mpirun cli: --frames needs a camera_path" * kWithMpirun) {
-    const Scratch dir;
-    const Run r = dir.run(raylabBinary() + " render " + std::string(RAYLAB_SOURCE_DIR) +
-                          "/scenes/primitives.json --frames 1:2 -o " + dir("x.exr"));
+    const test::TempDir dir;
+    const Run r = runCommand(raylabBinary() + " render " + std::string(RAYLAB_SOURCE_DIR) +
+                             "/scenes/primitives.json --frames 1:2 -o " + dir.file("x.exr"));
     CHECK(r.exitCode == 1);
     CHECK(r.err.find("--frames needs a \"camera_path\" in the scene") != std::string::npos);
     const Run usage =
-        dir.run(raylabBinary() + " render " + demo() + " --frames 5:2 -o " + dir("x.exr"));
+        runCommand(raylabBinary() + " render " + demo() + " --frames 5:2 -o " + dir.file("x.exr"));
     CHECK(usage.exitCode == 2);
     CHECK(usage.err.find("--frames: expected FIRST:LAST") != std::string::npos);
 }
 
 TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is written" *
           kWithMpirun) {
-    const Scratch dir;
-    const Run r = dir.run("RAYLAB_MPI_FAULT=stall:1 RAYLAB_MPI_TIMEOUT=2 " + mpirunRaylab(2) +
-                          " render " + demo() + " --width 64 --height 48 --threads 1 --quiet -o " +
-                          dir("x.exr"));
+    const test::TempDir dir;
+    const Run r =
+        runCommand("RAYLAB_MPI_FAULT=stall:1 RAYLAB_MPI_TIMEOUT=2 " + mpirunRaylab(2) + " render " +
+                   demo() + " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
     CHECK(r.exitCode != 0);
     CHECK_MESSAGE(r.err.find("raylab: error: rank 1 sent nothing for 2 s while holding ") !=
                       std::string::npos,
                   r.err);
-    CHECK_FALSE(std::filesystem::exists(dir("x.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
 }
 
 TEST_CASE("mpirun cli: a killed rank ends the job, nothing is written" * kWithMpirun) {
-    const Scratch dir;
-    const Run r = dir.run("RAYLAB_MPI_FAULT=kill:1 " + mpirunRaylab(2) + " render " + demo() +
-                          " --width 64 --height 48 --threads 1 --quiet -o " + dir("x.exr"));
+    const test::TempDir dir;
+    const Run r = runCommand("RAYLAB_MPI_FAULT=kill:1 " + mpirunRaylab(2) + " render " + demo() +
+                             " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
     CHECK(r.exitCode != 0);
     // Open MPI: "... exited on signal 9 (Killed)"; MPICH: "KILLED BY SIGNAL: 9".
     CHECK_MESSAGE((r.err.find("signal 9") != std::string::npos ||
                    r.err.find("SIGNAL: 9") != std::string::npos),
                   r.err);
-    CHECK_FALSE(std::filesystem::exists(dir("x.exr")));
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
 }

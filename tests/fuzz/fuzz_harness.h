@@ -84,7 +84,7 @@ inline std::string runNffInput(const std::string& bytes, bool* accepted = nullpt
 }
 
 /// A small OBJ and MTL that JSON inputs can name as {"type": "mesh", "file": "mesh.obj"}.
-inline void writeJsonSideFiles(const ScratchDir& dir) {
+inline void writeJsonSideFiles(const test::TempDir& dir) {
     dir.write("mesh.obj",
               "mtllib mesh.mtl\n"
               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
@@ -100,7 +100,7 @@ inline void writeJsonSideFiles(const ScratchDir& dir) {
 
 /// The JSON scene reader on `bytes`, as the file fuzz.json in `dir` (which
 /// must hold the side files of writeJsonSideFiles).
-inline std::string runJsonInput(const std::string& bytes, const ScratchDir& dir,
+inline std::string runJsonInput(const std::string& bytes, const test::TempDir& dir,
                                 bool* accepted = nullptr) {
     const std::string path = dir.file("fuzz.json");
     return loadAndExercise([&] { return loadJsonScene(bytes, path); }, accepted);
@@ -112,7 +112,7 @@ constexpr const char* kMtlSeparator = "\n#MTL\n";
 /// The OBJ path on `bytes`: the bytes up to the first "#MTL" line become
 /// fuzz.obj, the rest fuzz.mtl, in `dir`; then loadObjScene, as
 /// `raylab render fuzz.obj` does.
-inline std::string runObjInput(const std::string& bytes, const ScratchDir& dir,
+inline std::string runObjInput(const std::string& bytes, const test::TempDir& dir,
                                bool* accepted = nullptr) {
     const size_t cut = bytes.find(kMtlSeparator);
     std::string objPath;

@@ -15,7 +15,7 @@
 using namespace raylab;
 using raylab::test::contains;
 using raylab::test::failureOf;
-using raylab::test::IoTempDir;
+using raylab::test::TempDir;
 
 namespace {
 
@@ -311,7 +311,7 @@ TEST_CASE("json scene: sidedness defaults and materials by name or inline") {
 }
 
 TEST_CASE("json scene: meshes are two-sided unless \"sides\" says otherwise") {
-    IoTempDir dir;
+    TempDir dir;
     dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const std::string board =
         R"("origin": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [0, 1, 0], "materials": [{}, {}])";
@@ -335,7 +335,7 @@ TEST_CASE("json scene: meshes are two-sided unless \"sides\" says otherwise") {
 }
 
 TEST_CASE("json scene: OBJ mesh with transforms, relative to the scene file") {
-    IoTempDir dir;
+    TempDir dir;
     dir.write("meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
     const std::string scenePath =
         dir.write("scene.json", sceneWith(R"(
@@ -486,7 +486,7 @@ TEST_CASE("json scene: errors name file, line and key path") {
 }
 
 TEST_CASE("json scene: mesh file errors") {
-    IoTempDir dir;
+    TempDir dir;
     const std::string scenePath = dir.write(
         "scene.json", sceneWith("{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1},\n"
                                 "{\"type\": \"mesh\",\n\"file\": \"missing.obj\"}"));
@@ -506,7 +506,7 @@ TEST_CASE("json scene: mesh file errors") {
 }
 
 TEST_CASE("scene loader: dispatch by extension") {
-    IoTempDir dir;
+    TempDir dir;
     const std::string text = sceneWith(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})");
     CHECK(loadScene(dir.write("a.json", text)).objects.size() == 1);
     CHECK(loadScene(dir.write("b.JSON", text)).objects.size() == 1);  // case-insensitive

@@ -15,7 +15,7 @@
 using namespace raylab;
 using raylab::test::contains;
 using raylab::test::failureOf;
-using raylab::test::IoTempDir;
+using raylab::test::TempDir;
 
 namespace {
 
@@ -52,7 +52,7 @@ const char* kCube =
 }  // namespace
 
 TEST_CASE("obj: quads are triangulated; flat faces share positions") {
-    IoTempDir dir;
+    TempDir dir;
     // The cube without normals: 8 shared vertices, 12 triangles.
     const std::string path =
         dir.write("cube.obj",
@@ -82,7 +82,7 @@ TEST_CASE("obj: quads are triangulated; flat faces share positions") {
 }
 
 TEST_CASE("obj: vertex normals give a smooth part, one vertex per position/normal pair") {
-    IoTempDir dir;
+    TempDir dir;
     const ObjModel m = loadObj(dir.write("cube.obj", kCube), quiet());
     REQUIRE(m.parts.size() == 1);
     const TriangleMesh& mesh = *m.parts[0].mesh;
@@ -99,7 +99,7 @@ TEST_CASE("obj: vertex normals give a smooth part, one vertex per position/norma
 }
 
 TEST_CASE("obj: faces with and without normals become two parts") {
-    IoTempDir dir;
+    TempDir dir;
     const std::string path =
         dir.write("mixed.obj",
                   "o mixed\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nvn 0 0 2\n"
@@ -128,7 +128,7 @@ TEST_CASE("obj: faces with and without normals become two parts") {
 
 TEST_CASE("obj: one-value colours and 'd -halo' read as the MTL format defines them") {
     // tinyobjloader alone reads "Kd 0.5" as (0.5, 0, 0) and "d -halo 0.25" as d = 0.
-    IoTempDir dir;
+    TempDir dir;
     dir.write("m.mtl", "newmtl a\nillum 4\nKd 0.5\nKs 0.25\nd -halo 0.25\nKa 0.125 # c\n");
     const ObjModel m = loadObj(
         dir.write("m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
@@ -141,7 +141,7 @@ TEST_CASE("obj: one-value colours and 'd -halo' read as the MTL format defines t
 }
 
 TEST_CASE("obj: MTL illum models map to Whitted materials") {
-    IoTempDir dir;
+    TempDir dir;
     // Values are exact in float, so the mapping can be checked with ==.
     dir.write(
         "m.mtl",
@@ -219,7 +219,7 @@ TEST_CASE("obj: MTL illum models map to Whitted materials") {
 }
 
 TEST_CASE("obj: a missing MTL is a warning and the mesh still loads") {
-    IoTempDir dir;
+    TempDir dir;
     const std::string path = dir.write("nomtl.obj",
                                        "mtllib nothere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                                        "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\nusemtl a\nf 3 2 1\n");
@@ -234,7 +234,7 @@ TEST_CASE("obj: a missing MTL is a warning and the mesh still loads") {
 }
 
 TEST_CASE("obj: a material the MTL does not define is one warning at its first usemtl") {
-    IoTempDir dir;
+    TempDir dir;
     dir.write("lib.mtl", "newmtl red\nKd 1 0 0\n");
     const std::string path = dir.write("undef.obj",
                                        "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
@@ -262,7 +262,7 @@ TEST_CASE("obj: a material the MTL does not define is one warning at its first u
 }
 
 TEST_CASE("obj: bad face indices are errors with the face's line") {
-    IoTempDir dir;
+    TempDir dir;
     struct Case {
         const char* text;
         int line;
@@ -297,7 +297,7 @@ TEST_CASE("obj: bad face indices are errors with the face's line") {
 }
 
 TEST_CASE("obj: degenerate triangles, empty files and missing files") {
-    IoTempDir dir;
+    TempDir dir;
     const ObjModel m = loadObj(
         dir.write("degen.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\nf 1 2 4\n"),
         quiet());
@@ -343,7 +343,7 @@ TEST_CASE("obj: MeshTransform") {
 }
 
 TEST_CASE("obj scene: camera framed on the bounds, key light and ambient") {
-    IoTempDir dir;
+    TempDir dir;
     // Box [0,1] x [0,1] x {0}: centre (0.5, 0.5, 0), bounding-sphere radius √2 / 2.
     const Scene s = loadObjScene(dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
     CHECK(s.sourcePath == dir.file("tri.obj"));

@@ -10,8 +10,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "renderer/accel/accelerator.h"
@@ -20,6 +18,7 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "support/temp_dir.h"
 
 using namespace raylab;
 
@@ -239,22 +238,16 @@ TEST_CASE("spd render: SPD tetra.nff at low resolution has no NaN (needs ../shar
 }
 
 TEST_CASE("spd render: raylab render --spd --stats writes the SPD statistics") {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("raylab_test_spd_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    const std::string nff = (dir / "tiny.nff").string();
-    std::ofstream(nff) << sphereScene(kMatte);
-    const std::string stats = (dir / "stats.json").string();
+    const test::TempDir dir;
+    const std::string nff = dir.write("tiny.nff", sphereScene(kMatte));
+    const std::string stats = dir.file("stats.json");
     const std::string cmd = std::string(RAYLAB_BINARY) + " render '" + nff + "' -o '" +
-                            (dir / "out.exr").string() + "' --spd --width 4 --height 4 --stats '" +
-                            stats + "' --quiet >/dev/null 2>&1";
+                            dir.file("out.exr") + "' --spd --width 4 --height 4 --stats '" + stats +
+                            "' --quiet >/dev/null 2>&1";
     const int status = std::system(cmd.c_str());
     REQUIRE(WIFEXITED(status));
     REQUIRE(WEXITSTATUS(status) == 0);
-    std::stringstream text;
-    text << std::ifstream(stats).rdbuf();
-    std::filesystem::remove_all(dir);
-    const JsonValue json = parseJson(text.str(), stats);
+    const JsonValue json = parseJson(test::readFile(stats), stats);
     const JsonValue* rays = json.find("rays");
     REQUIRE(rays);
     // The counts derived in "the same scene in SPD mode" above.

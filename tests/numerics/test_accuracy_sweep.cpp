@@ -253,6 +253,6 @@ TEST_CASE("accuracy: the command line") {
     CHECK(r.exitCode == 0);
     CHECK(r.out.find("depth 3") != std::string::npos);
     // Quick depth settings: 1 and 3, plus the default, the reference and the header.
-    CHECK(cli::lineCount(cli::slurp(dir.file("r.csv"))) == 5);
-    CHECK(cli::slurp(dir.file("p.svg")).rfind("<svg", 0) == 0);
+    CHECK(cli::lineCount(cli::readFile(dir.file("r.csv"))) == 5);
+    CHECK(cli::readFile(dir.file("p.svg")).rfind("<svg", 0) == 0);
 }

@@ -5,23 +5,23 @@
 
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
-#include "test_temp_dir.h"
+#include "support/temp_dir.h"
 
 using namespace raylab;
-using raylab::test::readBytes;
+using raylab::test::readFile;
 using raylab::test::TempDir;
 
 TEST_CASE("atomic file: string overload writes the bytes and leaves no temporary") {
     TempDir dir;
     const std::string target = dir.file("doc.json");
     writeFileAtomically(target, std::string("{\"a\": 1}\n\0x", 11));
-    CHECK(readBytes(target) == std::string("{\"a\": 1}\n\0x", 11));
+    CHECK(readFile(target) == std::string("{\"a\": 1}\n\0x", 11));
     CHECK(dir.entries() == std::vector<std::string>{"doc.json"});
     CHECK(inFlightTempFileCount() == 0);
 
     // Replacing an existing file.
     writeFileAtomically(target, std::string("new"));
-    CHECK(readBytes(target) == "new");
+    CHECK(readFile(target) == "new");
     CHECK(dir.entries() == std::vector<std::string>{"doc.json"});
 }
 
@@ -39,7 +39,7 @@ TEST_CASE("atomic file: the writer gets an empty registered temporary beside the
         CHECK(inFlightTempFileCount() == 1);
         std::ofstream(tmp, std::ios::binary) << "payload";
     });
-    CHECK(readBytes(target) == "payload");
+    CHECK(readFile(target) == "payload");
     CHECK_FALSE(std::filesystem::exists(seen));
     CHECK(inFlightTempFileCount() == 0);
 }
@@ -72,7 +72,7 @@ TEST_CASE("atomic file: a failed write keeps the previous file intact") {
                                             throw std::runtime_error("interrupted");
                                         }),
                     InputError);
-    CHECK(readBytes(target) == "old");
+    CHECK(readFile(target) == "old");
     CHECK(dir.entries() == std::vector<std::string>{"out.exr"});
 }
 
@@ -130,8 +130,8 @@ TEST_CASE("atomic file group: all files appear at commit, none before") {
     CHECK_FALSE(std::filesystem::exists(dir.file("a.json")));
     CHECK(inFlightTempFileCount() == 2);
     group.commit();
-    CHECK(readBytes(dir.file("a.exr")) == "image");
-    CHECK(readBytes(dir.file("a.json")) == "stats");
+    CHECK(readFile(dir.file("a.exr")) == "image");
+    CHECK(readFile(dir.file("a.json")) == "stats");
     CHECK(dir.entries() == std::vector<std::string>{"a.exr", "a.json"});
     CHECK(inFlightTempFileCount() == 0);
 }
@@ -149,8 +149,8 @@ TEST_CASE("atomic file group: a failed later write leaves every earlier target u
         CHECK_THROWS_AS(writeFileAtomically(dir.file("no/dir/a.json"), std::string("s"), &group),
                         InputError);
     }
-    CHECK(readBytes(dir.file("a.exr")) == "old image");
-    CHECK(readBytes(dir.file("a.png")) == "old preview");
+    CHECK(readFile(dir.file("a.exr")) == "old image");
+    CHECK(readFile(dir.file("a.png")) == "old preview");
     CHECK(dir.entries() == std::vector<std::string>{"a.exr", "a.png"});
     CHECK(inFlightTempFileCount() == 0);
 }
@@ -165,7 +165,7 @@ TEST_CASE("atomic file group: a failed rename removes the remaining temporaries"
     // replace a non-empty directory.
     std::filesystem::create_directories(dir.file("second/child"));
     CHECK_THROWS_AS(group.commit(), InputError);
-    CHECK(readBytes(dir.file("first.txt")) == "1");  // renamed before the failure
+    CHECK(readFile(dir.file("first.txt")) == "1");  // renamed before the failure
     CHECK(dir.entries() == std::vector<std::string>{"first.txt", "second"});
     CHECK(inFlightTempFileCount() == 0);
 }
@@ -176,7 +176,7 @@ TEST_CASE("atomic file: checkWritable refuses missing folders and directories, t
     CHECK(dir.entries().empty());
     writeFileAtomically(dir.file("old.exr"), std::string("keep"));
     CHECK_NOTHROW(checkWritable(dir.file("old.exr")));
-    CHECK(readBytes(dir.file("old.exr")) == "keep");
+    CHECK(readFile(dir.file("old.exr")) == "keep");
     CHECK_THROWS_AS(checkWritable(dir.file("no/such/dir/out.exr")), InputError);
     std::filesystem::create_directories(dir.file("folder.exr"));
     try {
@@ -202,7 +202,7 @@ TEST_CASE("atomic file: a temporary left by a killed run does not block the next
     for (unsigned long k = next; k < next + 3; ++k)
         std::ofstream(stem + std::to_string(k)) << "stale";
     writeFileAtomically(target, std::string("fresh"));
-    CHECK(readBytes(target) == "fresh");
+    CHECK(readFile(target) == "fresh");
     CHECK(dir.entries().size() == 4);  // out.exr and the three stale files, untouched
     CHECK(inFlightTempFileCount() == 0);
 }

@@ -19,7 +19,7 @@
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_reader.h"
 #include "renderer/io/exr_writer.h"
-#include "test_temp_dir.h"
+#include "support/temp_dir.h"
 
 using namespace raylab;
 using raylab::test::TempDir;
@@ -268,9 +268,9 @@ TEST_CASE("exr: the same film gives byte-identical files") {
     TempDir dir;
     writeExr(dir.file("a.exr"), makeFilm(), makeOptions(false));
     writeExr(dir.file("b.exr"), makeFilm(), makeOptions(false));
-    const std::string a = raylab::test::readBytes(dir.file("a.exr"));
+    const std::string a = raylab::test::readFile(dir.file("a.exr"));
     CHECK(!a.empty());
-    CHECK(a == raylab::test::readBytes(dir.file("b.exr")));
+    CHECK(a == raylab::test::readFile(dir.file("b.exr")));
 }
 
 TEST_CASE("exr: the file bytes do not depend on the compression thread count") {
@@ -284,9 +284,9 @@ TEST_CASE("exr: the file bytes do not depend on the compression thread count") {
     writeExr(dir.file("one.exr"), f, o);
     o.threads = 4;
     writeExr(dir.file("four.exr"), f, o);
-    const std::string one = raylab::test::readBytes(dir.file("one.exr"));
+    const std::string one = raylab::test::readFile(dir.file("one.exr"));
     CHECK(one.size() > 1000);
-    CHECK(one == raylab::test::readBytes(dir.file("four.exr")));
+    CHECK(one == raylab::test::readFile(dir.file("four.exr")));
     CHECK(readExr(dir.file("four.exr")).depth == f.depth);
 }
 

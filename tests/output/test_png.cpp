@@ -9,10 +9,10 @@
 
 #include "renderer/io/errors.h"
 #include "renderer/io/png_writer.h"
-#include "test_temp_dir.h"
+#include "support/temp_dir.h"
 
 using namespace raylab;
-using raylab::test::readBytes;
+using raylab::test::readFile;
 using raylab::test::TempDir;
 
 namespace {
@@ -90,7 +90,7 @@ TEST_CASE("png: file has the PNG signature, IHDR size and the tone-mapped pixels
     writePng(path, film);
     CHECK(dir.entries() == std::vector<std::string>{"img.png"});
 
-    const std::string bytes = readBytes(path);
+    const std::string bytes = readFile(path);
     REQUIRE(bytes.size() > 33);
     CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
     // First chunk: length 13, "IHDR", width, height (big-endian), depth 8, colour type 2 (RGB).

@@ -13,65 +13,20 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "support/temp_dir.h"
+
 namespace raylab::robust {
 
-/// A scratch directory per test case, removed at the end of the case.
-class Scratch {
-public:
-    Scratch() {
-        static std::atomic<int> counter{0};
-        m_path = std::filesystem::temp_directory_path() /
-                 ("raylab_test_robust_" + std::to_string(long(::getpid())) + "_" +
-                  std::to_string(counter++));
-        std::filesystem::remove_all(m_path);
-        std::filesystem::create_directories(m_path);
-    }
-    ~Scratch() {
-        std::error_code ec;
-        std::filesystem::remove_all(m_path, ec);
-    }
-    Scratch(const Scratch&) = delete;
-    Scratch& operator=(const Scratch&) = delete;
-
-    const std::filesystem::path& path() const { return m_path; }
-    std::string file(const std::string& name) const { return (m_path / name).string(); }
-
-    /// Writes exactly the bytes of `bytes` to `name`; returns the full path.
-    std::string write(const std::string& name, const std::string& bytes) const {
-        const std::string p = file(name);
-        std::filesystem::create_directories(std::filesystem::path(p).parent_path());
-        std::ofstream(p, std::ios::binary) << bytes;
-        return p;
-    }
-
-    /// Names of the regular files in the directory (recursively), sorted.
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& e : std::filesystem::recursive_directory_iterator(m_path))
-            if (e.is_regular_file())
-                names.push_back(std::filesystem::relative(e.path(), m_path).string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    std::filesystem::path m_path;
-};
-
-inline std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using test::readFile;
+using test::TempDir;
 
 /// The lines of `text` without their '\n' (a last line without one counts).
 inline std::vector<std::string> lines(const std::string& text) {
@@ -195,7 +150,7 @@ struct RunResult {
 /// `timeoutSeconds` is killed and reported as timed out.
 inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutSeconds = 60,
                            double addressSpaceLimit = 0) {
-    const Scratch io;
+    const TempDir io;
     RunResult r;
     {
         Process p(args, io.file("stdout"), io.file("stderr"), addressSpaceLimit);
@@ -216,7 +171,7 @@ inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutS
 
 /// `render SCENE -o DIR/out.exr --png DIR/out.png --width 8 --height 8 --quiet`
 /// plus `extra`, where DIR is the scene's scratch directory.
-inline std::vector<std::string> tinyRender(const Scratch& dir, const std::string& scene,
+inline std::vector<std::string> tinyRender(const TempDir& dir, const std::string& scene,
                                            const std::vector<std::string>& extra = {}) {
     std::vector<std::string> args{"render", scene, "-o", dir.file("out.exr"), "--png",
                                   dir.file("out.png"), "--width", "8", "--height", "8",
@@ -229,7 +184,7 @@ inline std::vector<std::string> tinyRender(const Scratch& dir, const std::string
 /// "raylab: error: " + `location` + ..., containing `fragment`, and `dir`
 /// holds exactly `inputs` afterwards (no output, no temporary file).
 /// `location` is "FILE:LINE:" or "FILE:" for a whole-file problem, "" for usage.
-inline void checkRefused(const RunResult& r, const Scratch& dir,
+inline void checkRefused(const RunResult& r, const TempDir& dir,
                          const std::vector<std::string>& inputs, int code,
                          const std::string& location, const std::string& fragment) {
     const std::string err = head(r.err);
@@ -256,7 +211,7 @@ inline void checkRefused(const RunResult& r, const Scratch& dir,
 
 /// The contract for accepted input: exit 0, an EXR and a PNG written, no
 /// temporary file left, and stderr holding only "raylab: warning: " lines.
-inline void checkRendered(const RunResult& r, const Scratch& dir,
+inline void checkRendered(const RunResult& r, const TempDir& dir,
                           const std::vector<std::string>& inputs) {
     const std::string err = head(r.err);
     CAPTURE(err);
@@ -277,7 +232,7 @@ namespace raylab::robust {
 /// For inputs that may legitimately go either way (extreme but finite
 /// values): rendered (checkRendered) or refused (checkRefused with exit 1
 /// and `location`), never a crash, a hang or a half-written file.
-inline void checkHandled(const RunResult& r, const Scratch& dir,
+inline void checkHandled(const RunResult& r, const TempDir& dir,
                          const std::vector<std::string>& inputs, const std::string& location) {
     if (r.exitCode == 0)
         checkRendered(r, dir, inputs);

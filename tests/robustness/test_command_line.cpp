@@ -37,7 +37,7 @@ TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit
         {"--width", "8", "--width", "9"}, {"--output", "other.exr"}, {"-o", "other.exr"},
     };
     for (const std::vector<std::string>& flags : bad) {
-        Scratch dir;
+        TempDir dir;
         const std::string scene = dir.write("scene.json", kScene);
         std::vector<std::string> args{"render", scene, "-o", dir.file("out.exr"), "--quiet"};
         args.insert(args.end(), flags.begin(), flags.end());
@@ -51,7 +51,7 @@ TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit
 TEST_CASE("command line: huge or control-character arguments are not echoed raw") {
     // A 100 kB value and an escape sequence: still one short, printable line.
     for (const std::string& value : {std::string(100000, '9'), std::string("\x1b[2J\r\x07oops")}) {
-        Scratch dir;
+        TempDir dir;
         const std::string scene = dir.write("scene.json", kScene);
         checkRefused(runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", value}),
                      dir, {"scene.json"}, 2, "", "--width");
@@ -61,7 +61,7 @@ TEST_CASE("command line: huge or control-character arguments are not echoed raw"
 }
 
 TEST_CASE("command line: missing or unreadable scenes are input errors (exit 1)") {
-    Scratch dir;
+    TempDir dir;
     const std::string out = dir.file("out.exr");
     checkRefused(runRaylab({"render", dir.file("missing.json"), "-o", out}), dir, {}, 1,
                  dir.file("missing.json") + ":", "cannot open");
@@ -77,7 +77,7 @@ TEST_CASE("command line: missing or unreadable scenes are input errors (exit 1)"
 }
 
 TEST_CASE("command line: unwritable outputs fail with one line and leave no temporary file") {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     const std::vector<std::string> tiny{"--width", "8", "--height", "8", "--quiet"};
     auto args = [&](std::vector<std::string> a) {
@@ -108,7 +108,7 @@ TEST_CASE("command line: an output that is a FIFO (or any non-file node) is refu
     // Renaming the finished file over a device (/dev/full, /dev/null as root),
     // a FIFO or a socket would replace the node itself. A FIFO stands in for
     // them all here: the same check, and safe to try as root.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     const std::vector<std::pair<std::string, std::string>> outputs = {
         {"-o", "node.exr"}, {"--png", "node.png"}, {"--stats", "node.json"}};
@@ -129,7 +129,7 @@ TEST_CASE("command line: an output that is a FIFO (or any non-file node) is refu
 TEST_CASE("command line: an output that is a symbolic link replaces the file it points to") {
     // The link stays a link; the file it names (relative to the link's own
     // folder) gets the render, also when it does not exist yet.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     dir.write("real/old.png", "previous");
     std::filesystem::create_directories(dir.file("links"));
@@ -150,7 +150,7 @@ TEST_CASE("command line: an output that is a symbolic link replaces the file it 
 }
 
 TEST_CASE("command line: a scene that is a FIFO, a device or too big is refused at once") {
-    Scratch dir;
+    TempDir dir;
     const std::string out = dir.file("out.exr");
     // A FIFO nobody writes to: opening it for reading would wait for ever.
     const std::string fifo = dir.file("pipe.nff");
@@ -174,7 +174,7 @@ TEST_CASE("command line: a scene that is a FIFO, a device or too big is refused 
 }
 
 TEST_CASE("command line: a failed render never touches an existing output file") {
-    Scratch dir;
+    TempDir dir;
     const std::string old = "previous render, must survive";
     dir.write("out.exr", old);
     dir.write("out.png", old);
@@ -188,7 +188,7 @@ TEST_CASE("command line: a failed render never touches an existing output file")
 TEST_CASE("command line: an unwritable --stats leaves the previous EXR and PNG byte-identical") {
     // Checked before the render starts, and the outputs of a frame are
     // committed together: nothing is replaced unless everything is written.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     const std::string old = "previous render, must survive";
     dir.write("out.exr", old);
@@ -203,7 +203,7 @@ TEST_CASE("command line: an unwritable --stats leaves the previous EXR and PNG b
 }
 
 TEST_CASE("command line: outputs naming one file, the scene, or the wrong format are refused") {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     const std::vector<std::vector<std::string>> clashes = {
         {"-o", dir.file("a.exr"), "--png", dir.file("a.exr")},
@@ -233,7 +233,7 @@ TEST_CASE("command line: outputs naming one file, the scene, or the wrong format
 }
 
 TEST_CASE("command line: --spp with the scene's own adaptive sampling is a usage error") {
-    Scratch dir;
+    TempDir dir;
     std::string text = kScene;
     text.insert(text.rfind('}'), ",\n \"render\": {\"adaptive\": 0.1}");
     const std::string scene = dir.write("scene.json", text);
@@ -249,7 +249,7 @@ TEST_CASE("command line: --width 65536 --height 65536 is refused by the memory g
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
     // 65536^2 pixels x 48 floats of film and encoder copies: about 824 GB.
     if (memory > 0.5e12) return;  // a machine that big would start the render
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.json", kScene);
     const RunResult r = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", "65536",
                                    "--height", "65536", "--quiet"},

@@ -31,7 +31,7 @@ std::string sphereGrid(int n) {
     return s;
 }
 
-bool hasTemp(const Scratch& dir) {
+bool hasTemp(const TempDir& dir) {
     for (const std::string& f : dir.files())
         if (contains(f, ".tmp.")) return true;
     return false;
@@ -44,7 +44,7 @@ void sleepSeconds(double s) {
 }  // namespace
 
 TEST_CASE("interrupt: SIGINT during a long render exits 130 promptly with no output") {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("grid.nff", sphereGrid(2000));
     // 2000 spheres x 1600^2 pixels with the naive loop: minutes of work.
     Process p({"render", scene, "-o", dir.file("out.exr"), "--png", dir.file("out.png"),
@@ -71,7 +71,7 @@ TEST_CASE("interrupt: SIGINT during a long render exits 130 promptly with no out
 }
 
 TEST_CASE("interrupt: a second SIGINT leaves at once, still without output") {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("grid.nff", sphereGrid(2000));
     Process p({"render", scene, "-o", dir.file("out.exr"), "--width", "1600", "--height", "1600",
                "--accel", "naive", "--threads", "2", "--quiet"},
@@ -90,7 +90,7 @@ TEST_CASE("interrupt: wherever SIGINT lands, the outputs are absent or complete"
     // A short render is timed once, then interrupted at delays from 0 to
     // 1.4x its duration: before main, during the load, the render, the
     // writes, and after the end.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("grid.nff", sphereGrid(100));
     const std::vector<std::string> args{
         "render",  scene,      "-o",     dir.file("out.exr"), "--png",     dir.file("out.png"),

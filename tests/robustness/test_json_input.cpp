@@ -29,7 +29,7 @@ std::string scene(const std::string& objects = kSphere,
 void refused(const std::string& text, int line, const std::string& fragment,
              const std::vector<std::string>& extraFiles = {},
              const std::vector<std::pair<std::string, std::string>>& files = {}) {
-    Scratch dir;
+    TempDir dir;
     for (const auto& [name, body] : files) dir.write(name, body);
     const std::string path = dir.write("scene.json", text);
     const RunResult r = runRaylab(tinyRender(dir, path));
@@ -43,7 +43,7 @@ void refused(const std::string& text, int line, const std::string& fragment,
 void rendered(const std::string& text,
               const std::vector<std::pair<std::string, std::string>>& files = {},
               const std::vector<std::string>& extra = {}) {
-    Scratch dir;
+    TempDir dir;
     std::vector<std::string> inputs{"scene.json"};
     for (const auto& [name, body] : files) {
         dir.write(name, body);
@@ -145,7 +145,7 @@ TEST_CASE("json: deeply nested and huge documents") {
     // The same polygon with "triangulate": true: the ear clipping is quadratic
     // (20000 vertices take 2 s, 40000 take 7 s), so 300000 would take minutes.
     // It must be refused at its line or rendered within 30 s.
-    Scratch dir;
+    TempDir dir;
     const std::string path = dir.write(
         "scene.json", scene("{\"type\": \"polygon\", \"vertices\": [" + verts +
                             "], \"triangulate\": true}"));
@@ -175,7 +175,7 @@ TEST_CASE("json: very long lines and keys neither hang nor flood the terminal") 
 TEST_CASE("json: control characters from the input are not echoed raw to the terminal") {
     // An unknown key holding ESC sequences (written as JSON escapes): the
     // error line must not carry raw control bytes.
-    Scratch dir;
+    TempDir dir;
     const std::string path = dir.write("scene.json", "{\"\\u001b[2J\\u001b]0;pwned\\u0007\": 1}");
     const RunResult r = runRaylab(tinyRender(dir, path));
     CHECK(r.exitCode == 1);
@@ -218,7 +218,7 @@ TEST_CASE("json: mesh files that are missing, broken, or miss their MTL") {
     refused(scene(R"({"type": "mesh", "file": "nope.obj"})"), 4, "nope.obj");
     // An OBJ with a face index out of range: the OBJ's own line.
     {
-        Scratch dir;
+        TempDir dir;
         dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
         const std::string path =
             dir.write("scene.json", scene(R"({"type": "mesh", "file": "bad.obj"})"));
@@ -228,7 +228,7 @@ TEST_CASE("json: mesh files that are missing, broken, or miss their MTL") {
     // A scale that collapses every triangle: the message says the transform
     // did it, not the OBJ (which is fine on its own).
     {
-        Scratch dir;
+        TempDir dir;
         dir.write("tri.obj", tri);
         const std::string path = dir.write(
             "scene.json",

@@ -30,7 +30,7 @@ constexpr double kBytesPerPixel = 12 * 4 * 2;
 TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
     // 60000^2 x 96 bytes = 3.456e11 bytes (about 322 GiB).
     if (60000.0 * 60000.0 * kBytesPerPixel <= 0.8 * machineMemory()) return;
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write(
         "big.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nresolution 60000 60000\n"
                    "s 0 0 0 1\n");
@@ -44,7 +44,7 @@ TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
 TEST_CASE("memory guard: a huge JSON image is refused up front") {
     // 32768^2 x 96 bytes = 1.03e11 bytes (96 GiB).
     if (32768.0 * 32768.0 * kBytesPerPixel <= 0.8 * machineMemory()) return;
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write(
         "big.json", "{\"image\": {\"width\": 32768, \"height\": 32768},\n"
                     " \"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
@@ -93,7 +93,7 @@ TEST_CASE("memory guard: a tiny file cannot expand into an unbounded scene") {
     // before the first pixel and out of reach of the first Ctrl-C (the BVH
     // build is not interruptible). checkMemoryBudget only sees the film. A
     // small file must not cost that much: refused (or rendered) within 10 s.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write(
         "board.json",
         "{\"camera\": {\"eye\": [0, 5, 5], \"look_at\": [0, 0, 0]},\n"
@@ -186,7 +186,7 @@ TEST_CASE("memory guard: under ulimit -v a render too big for the address space 
 #else
     // 10000^2 x 96 B = 9155 MiB: more than a 3 GiB address space, less than
     // what 24 GB machines would allow without the limit.
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write(
         "s.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nresolution 8 8\ns 0 0 0 1\n");
     const RunResult r = runRaylab({"render", scene, "-o", dir.file("out.exr"), "--width", "10000",

@@ -17,7 +17,7 @@ const std::string kView =
 /// Renders `text` saved as scene.nff; checks the refusal contract.
 void refused(const std::string& text, int line, const std::string& fragment,
              const std::vector<std::string>& extra = {}) {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.nff", text);
     const RunResult r = runRaylab(tinyRender(dir, scene, extra));
     const std::string location = scene + ":" + (line > 0 ? std::to_string(line) + ":" : "");
@@ -25,7 +25,7 @@ void refused(const std::string& text, int line, const std::string& fragment,
 }
 
 void rendered(const std::string& text, const std::vector<std::string>& extra = {}) {
-    Scratch dir;
+    TempDir dir;
     const std::string scene = dir.write("scene.nff", text);
     checkRendered(runRaylab(tinyRender(dir, scene, extra)), dir, {"scene.nff"});
 }

@@ -20,7 +20,7 @@ const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 void refused(const std::string& obj, int line, const std::string& fragment,
              const std::vector<std::pair<std::string, std::string>>& files = {},
              const std::string& errorFile = "mesh.obj") {
-    Scratch dir;
+    TempDir dir;
     std::vector<std::string> inputs{"mesh.obj"};
     for (const auto& [name, body] : files) {
         dir.write(name, body);
@@ -35,7 +35,7 @@ void refused(const std::string& obj, int line, const std::string& fragment,
 /// Rendered or refused, whichever the reader decides, within `seconds`.
 void handled(const std::string& obj, double seconds = 60,
              const std::vector<std::pair<std::string, std::string>>& files = {}) {
-    Scratch dir;
+    TempDir dir;
     std::vector<std::string> inputs{"mesh.obj"};
     for (const auto& [name, body] : files) {
         dir.write(name, body);
@@ -50,7 +50,7 @@ void handled(const std::string& obj, double seconds = 60,
 /// Renders; returns stderr (the warnings) for further checks.
 std::string rendered(const std::string& obj,
                      const std::vector<std::pair<std::string, std::string>>& files = {}) {
-    Scratch dir;
+    TempDir dir;
     std::vector<std::string> inputs{"mesh.obj"};
     for (const auto& [name, body] : files) {
         dir.write(name, body);
@@ -186,7 +186,7 @@ TEST_CASE("obj: broken MTL files are refused at the MTL's line, naming the mater
 }
 
 TEST_CASE("obj: an MTL library that is a device or FIFO is refused, not read without end") {
-    Scratch dir;
+    TempDir dir;
     const std::string obj = dir.write("mesh.obj", "mtllib zero.mtl\nusemtl a\n" + kTriangle);
     std::filesystem::create_symlink("/dev/zero", dir.file("zero.mtl"));
     RunResult r = runRaylab(tinyRender(dir, obj), 20);

@@ -31,7 +31,7 @@ std::vector<fs::path> filesIn(const fs::path& dir) {
 /// Runs one input through its reader's fuzz steps; "" when handled properly.
 std::string replay(const std::string& reader, const std::string& bytes,
                    bool* accepted = nullptr) {
-    raylab::fuzz::ScratchDir dir;
+    raylab::test::TempDir dir;
     if (reader == "nff") return raylab::fuzz::runNffInput(bytes, accepted);
     if (reader == "json") {
         raylab::fuzz::writeJsonSideFiles(dir);
