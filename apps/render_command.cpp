@@ -92,7 +92,7 @@ namespace {
 struct RenderCli {
     std::string scene, exr, png, stats;
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
-    std::string polygons;              ///< --polygons: watertight, projected or triangles
+    bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
     double exposure = 0;
     RenderOverrides overrides;
@@ -131,7 +131,11 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--png") cli.png = p.value(a);
         else if (a == "--stats") cli.stats = p.value(a);
         else if (a == "--frames") cli.frames = parseFrameRange(p.value(a));
-        else if (a == "--polygons") cli.polygons = p.choice(a, {"watertight", "projected", "triangles"});
+        else if (a == "--polygons") {
+            const std::string v = p.choice(a, {"watertight", "projected", "triangles"});
+            if (v == "triangles") cli.triangulatePolygons = true;
+            else o.polygonTest = v == "projected" ? PolygonTest::Projected : PolygonTest::Watertight;
+        }
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
@@ -205,9 +209,7 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
 
     auto t0 = Clock::now();
     Scene scene = loadScene(cli.scene);
-    if (cli.polygons == "triangles") triangulatePolygons(scene);
-    else if (cli.polygons == "projected") setPolygonInsideTest(scene, PolygonTest::Projected);
-    else if (cli.polygons == "watertight") setPolygonInsideTest(scene, PolygonTest::Watertight);
+    if (cli.triangulatePolygons) triangulatePolygons(scene);
     RenderStats stats;
     stats.parseSeconds = secondsSince(t0);
 
@@ -219,7 +221,6 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
                          (options.spd ? "--spd" : "adaptive supersampling (--adaptive or the scene's \"adaptive\")") +
                          ", which samples pixel corners instead");
     checkMemoryBudget(scene, options);
-    applyPrecision(scene, options.precision);
     // Every frame's camera is checked before the first frame renders.
     const std::optional<CameraPath> path =
         cli.frames ? std::optional<CameraPath>(sequenceCameraPath(cli.scene, scene, *cli.frames))

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/quadratic.h"
+#include "geometry/surface_parameters.h"
 #include "geometry/validate.h"
 
 namespace raylab {
@@ -34,7 +35,8 @@ Bounds3 Cone::bounds() const {
 }
 
 template <class T>
-std::optional<ShapeHit> Cone::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Cone::intersectT(const Ray& ray, double tMin, double tMax,
+                                         const IntersectOptions&) const {
     using V = Vec3T<T>;
     // Local frame: base at the origin, z along the axis (orthonormal, so t is unchanged).
     const V ex(m_frame.t), ey(m_frame.b), ez(m_frame.n);
@@ -109,18 +111,19 @@ std::optional<ShapeHit> Cone::intersectT(const Ray& ray, double tMin, double tMa
     return hit;
 }
 
-std::optional<ShapeHit> Cone::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Cone::intersectT<float>(const Ray&, double, double,
+                                                        const IntersectOptions&) const;
+template std::optional<ShapeHit> Cone::intersectT<double>(const Ray&, double, double,
+                                                         const IntersectOptions&) const;
 
-SurfaceGeometry Cone::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+SurfaceGeometry Cone::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     g.p = ray.at(hit.t);
     Vec3 n;
-    if (hit.v < 0) {
+    const bool baseCap = hit.v < 0, apexCap = hit.v > 1;
+    if (baseCap) {
         n = -m_frame.n;
-    } else if (hit.v > 1) {
+    } else if (apexCap) {
         n = m_frame.n;
     } else {
         const Vec3 local = m_frame.toLocal(g.p - m_base);
@@ -135,6 +138,25 @@ SurfaceGeometry Cone::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
     }
     g.ng = g.ns = n;
     g.frontFace = dot(ray.d, n) < 0;
+    if (detail == SurfaceDetail::Complete) {
+        const Vec3 local = m_frame.toLocal(g.p - m_base);
+        if (baseCap || apexCap) {
+            const LocalParameters l = polarParameters(local.x, local.y, baseCap ? m_r0 : m_r1);
+            g.uv = l.uv;
+            g.dpdu = m_frame.toWorld(l.dpdu);
+            g.dpdv = m_frame.toWorld(l.dpdv);
+        } else {
+            // p(u, v) = base + (r cos φ, r sin φ, z) with φ = 2πu, z = v·height,
+            // r = r0 + k z; the normal (cos φ, sin φ, -k) / sqrt(1 + k²) turns
+            // with φ only.
+            const Azimuth a(local.x, local.y);
+            g.uv = {a.u, local.z / m_height};
+            g.dpdu = m_frame.toWorld(Vec3{-local.y, local.x, 0} * kTwoPi);
+            g.dpdv = m_frame.toWorld(Vec3{m_slope * a.cosPhi, m_slope * a.sinPhi, 1} * m_height);
+            const double inv = 1 / std::sqrt(1 + m_slope * m_slope);
+            g.dndu = m_frame.toWorld(Vec3{-a.sinPhi, a.cosPhi, 0} * (kTwoPi * inv));
+        }
+    }
     return g;
 }
 

@@ -12,11 +12,11 @@
 
 #include "geometry/frame.h"
 #include "geometry/primitives.h"
-#include "geometry/shape.h"
+#include "geometry/analytic_shape.h"
 
 namespace raylab {
 
-class Cone final : public Shape {
+class Cone final : public AnalyticShape<Cone> {
 public:
     /// Validated by makeCone(): base and apex finite and distinct, radii finite
     /// and >= 0, not both 0.
@@ -27,13 +27,18 @@ public:
     /// Closest accepted hit on the side (0 <= z <= height, rim included) or on a
     /// cap (distance from the axis <= the end radius). Facing is the sign of
     /// dot(d, outward normal), taken exactly from the root structure for the
-    /// side. u, v: side u = 0, v = z / height in [0, 1]; base cap u = ρ / baseRadius,
-    /// v = -1; apex cap u = ρ / apexRadius, v = 2 (surfaceAt uses v to tell them apart).
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// side. ShapeHit u, v: side u = 0, v = z / height in [0, 1]; base cap
+    /// u = ρ / baseRadius, v = -1; apex cap u = ρ / apexRadius, v = 2 (surface()
+    /// uses v to tell them apart).
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions& opt) const;
     /// Point and outward normal: the side's (x, y, -ρ·k) in the local frame,
     /// -axis on the base cap and +axis on the apex cap. At a cone's apex
     /// (ρ = 0) the normal is the mean of the side normals there, ±axis.
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// uv: side (φ/2π, z / height); caps polar (φ/2π, ρ / cap radius); φ from
+    /// the frame's first tangent around the axis.
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     /// "cylinder" when the radii are equal, "cone" otherwise.
     const char* kind() const override;
 
@@ -45,9 +50,6 @@ public:
     bool capped() const { return m_capped; }
 
 private:
-    template <class T>
-    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
-
     Vec3 m_base;
     Frame m_frame;  ///< n = unit axis from base to apex
     double m_height;

@@ -2,6 +2,7 @@
 
 #include "geometry/plane_hit.h"
 #include "geometry/primitives.h"
+#include "geometry/surface_parameters.h"
 #include "geometry/validate.h"
 
 namespace raylab {
@@ -15,7 +16,8 @@ Bounds3 Disk::bounds() const {
 }
 
 template <class T>
-std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMax,
+                                         const IntersectOptions&) const {
     const auto h = intersectFramedPlane<T>(m_frame, m_centre, m_sides, ray, tMin, tMax);
     if (!h) return std::nullopt;
     const T r = static_cast<T>(m_radius);
@@ -23,17 +25,24 @@ std::optional<ShapeHit> Disk::intersectT(const Ray& ray, double tMin, double tMa
     return ShapeHit{h->t, static_cast<double>(h->u / r), static_cast<double>(h->v / r)};
 }
 
-std::optional<ShapeHit> Disk::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Disk::intersectT<float>(const Ray&, double, double,
+                                                        const IntersectOptions&) const;
+template std::optional<ShapeHit> Disk::intersectT<double>(const Ray&, double, double,
+                                                         const IntersectOptions&) const;
 
-SurfaceGeometry Disk::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+SurfaceGeometry Disk::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     const Vec3 p = ray.at(hit.t);
     g.p = p - m_frame.n * dot(m_frame.n, p - m_centre);
     g.ng = g.ns = m_frame.n;
     g.frontFace = dot(ray.d, m_frame.n) < 0;
+    if (detail == SurfaceDetail::Complete) {
+        const Vec3 local = m_frame.toLocal(g.p - m_centre);
+        const LocalParameters l = polarParameters(local.x, local.y, m_radius);
+        g.uv = l.uv;
+        g.dpdu = m_frame.toWorld(l.dpdu);
+        g.dpdv = m_frame.toWorld(l.dpdv);
+    }
     return g;
 }
 

@@ -4,11 +4,11 @@
 #include <optional>
 
 #include "geometry/frame.h"
-#include "geometry/shape.h"
+#include "geometry/analytic_shape.h"
 
 namespace raylab {
 
-class Disk final : public Shape {
+class Disk final : public AnalyticShape<Disk> {
 public:
     /// Disk of `radius` around `centre` with unit outward `normal`; parameters
     /// are validated by makeDisk().
@@ -17,11 +17,14 @@ public:
     /// Box of the disk: centre ± r·sqrt(1 - n_i²) per axis, padded.
     Bounds3 bounds() const override;
     /// Plane hit accepted when its distance from the centre is <= radius (the
-    /// rim belongs to the disk). u, v = in-plane coordinates of the hit relative
-    /// to the centre along the frame tangents, divided by the radius.
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
-    /// Hit point (projected onto the plane) and the outward normal.
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// rim belongs to the disk). ShapeHit u, v = in-plane coordinates of the hit
+    /// relative to the centre along the frame tangents, divided by the radius.
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions& opt) const;
+    /// Hit point (projected onto the plane) and the outward normal; uv = polar
+    /// coordinates (φ/2π from the frame's first tangent, ρ / radius).
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "disk"; }
 
     const Vec3& centre() const { return m_centre; }
@@ -29,9 +32,6 @@ public:
     double radius() const { return m_radius; }
 
 private:
-    template <class T>
-    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
-
     Vec3 m_centre;
     Frame m_frame;
     double m_radius;

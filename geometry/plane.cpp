@@ -21,7 +21,8 @@ Bounds3 Plane::bounds() const {
 }
 
 template <class T>
-std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tMax,
+                                          const IntersectOptions&) const {
     const auto h = intersectFramedPlane<T>(m_frame, m_point, m_sides, ray, tMin, tMax);
     if (!h) return std::nullopt;
     const T e = static_cast<T>(m_halfExtent);
@@ -29,18 +30,24 @@ std::optional<ShapeHit> Plane::intersectT(const Ray& ray, double tMin, double tM
     return ShapeHit{h->t, static_cast<double>(h->u), static_cast<double>(h->v)};
 }
 
-std::optional<ShapeHit> Plane::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Plane::intersectT<float>(const Ray&, double, double,
+                                                         const IntersectOptions&) const;
+template std::optional<ShapeHit> Plane::intersectT<double>(const Ray&, double, double,
+                                                          const IntersectOptions&) const;
 
-SurfaceGeometry Plane::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+SurfaceGeometry Plane::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     const Vec3 p = ray.at(hit.t);
     // Remove the off-plane error that o + t·d accumulates for grazing rays.
     g.p = p - m_frame.n * dot(m_frame.n, p - m_point);
     g.ng = g.ns = m_frame.n;
     g.frontFace = dot(ray.d, m_frame.n) < 0;
+    if (detail == SurfaceDetail::Complete) {
+        const Vec3 local = g.p - m_point;
+        g.uv = {dot(local, m_frame.t), dot(local, m_frame.b)};
+        g.dpdu = m_frame.t;
+        g.dpdv = m_frame.b;
+    }
     return g;
 }
 

@@ -45,6 +45,17 @@ int crossSign(T ax, T ay, T bx, T by) {
     return 0;
 }
 
+/// The (u, v) axes of a polygon: t along its first edge projected onto the
+/// plane (vertex 0 to the next vertex that differs from it), b = n × t.
+Frame uvFrame(const std::vector<Vec3>& vertices, const Vec3& n) {
+    for (size_t i = 1; i < vertices.size(); ++i) {
+        const Vec3 e = vertices[i] - vertices[0];
+        const Vec3 t = normalize(e - n * dot(n, e));
+        if (lengthSquared(t) > 0.5) return Frame{t, cross(n, t), n};
+    }
+    return Frame::fromNormal(n);
+}
+
 }  // namespace
 
 Vec3 newellNormal(const std::vector<Vec3>& vertices) {
@@ -66,6 +77,7 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
       m_normals(std::move(normals)),
       m_frame(Frame::fromNormal(normal)),
       m_centroid(centroid),
+      m_uvFrame(uvFrame(m_vertices, normal)),
       m_dropAxis(dominantAxis(normal)),
       m_rule(rule),
       m_test(test) {
@@ -80,6 +92,16 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
             m_coordsF[k].push_back(static_cast<float>(v[k]));
         }
     }
+    // The bounding rectangle in the (u, v) axes.
+    Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    Vec2 hi = lo * -1.0;
+    for (const Vec3& v : m_vertices) {
+        const Vec2 q{dot(v - m_centroid, m_uvFrame.t), dot(v - m_centroid, m_uvFrame.b)};
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+    }
+    m_uvOrigin = lo;
+    m_uvSize = hi - lo;
     // Hits lie on the centroid plane, up to `deviation` away from the vertices.
     m_bounds.lo -= Vec3{deviation, deviation, deviation};
     m_bounds.hi += Vec3{deviation, deviation, deviation};
@@ -265,7 +287,8 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
 }
 
 template <class T>
-std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double tMax,
+                                            const IntersectOptions& opt) const {
     using V = Vec3T<T>;
     const V o(ray.o);
     const V d(ray.d);
@@ -275,17 +298,18 @@ std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double 
     if (!acceptsFacing(m_sides, cosine < T(0))) return std::nullopt;
     const double td = static_cast<double>(t);
     if (!(tMin < td && td < tMax)) return std::nullopt;
+    const PolygonTest test = opt.polygonTest.value_or(m_test);
     const bool inside =
-        m_test == PolygonTest::Watertight ? insideWatertight(o, d) : insideProjected(o + d * t);
+        test == PolygonTest::Watertight ? insideWatertight(o, d) : insideProjected(o + d * t);
     if (!inside) return std::nullopt;
     const Vec3 local = ray.at(td) - m_centroid;
     return ShapeHit{td, dot(local, m_frame.t), dot(local, m_frame.b)};
 }
 
-std::optional<ShapeHit> Polygon::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Polygon::intersectT<float>(const Ray&, double, double,
+                                                           const IntersectOptions&) const;
+template std::optional<ShapeHit> Polygon::intersectT<double>(const Ray&, double, double,
+                                                            const IntersectOptions&) const;
 
 Vec3 Polygon::interpolatedNormal(const Vec3& p) const {
     // Mean-value coordinates (Floater 2003; signed angles per Hormann & Floater
@@ -327,20 +351,34 @@ Vec3 Polygon::interpolatedNormal(const Vec3& p) const {
     return sum;
 }
 
-SurfaceGeometry Polygon::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+Vec3 Polygon::shadingNormal(const Vec3& p) const {
+    if (m_normals.empty()) return m_frame.n;
+    Vec3 ns = normalize(interpolatedNormal(p));
+    if (!isFinite(ns) || ns == Vec3{}) return m_frame.n;
+    return dot(ns, m_frame.n) < 0 ? -ns : ns;
+}
+
+SurfaceGeometry Polygon::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     const Vec3 p = ray.at(hit.t);
     g.p = p - m_frame.n * dot(m_frame.n, p - m_centroid);
     g.ng = m_frame.n;
-    g.ns = g.ng;
-    if (!m_normals.empty()) {
-        Vec3 ns = normalize(interpolatedNormal(g.p));
-        if (isFinite(ns) && ns != Vec3{}) {
-            if (dot(ns, g.ng) < 0) ns = -ns;
-            g.ns = ns;
+    g.ns = shadingNormal(g.p);
+    g.frontFace = dot(ray.d, g.ng) < 0;
+    if (detail == SurfaceDetail::Complete) {
+        const Vec3 local = g.p - m_centroid;
+        // A degenerate extent (never for a valid polygon) keeps u or v at 0.
+        const auto scaled = [](double x, double size) { return size > 0 ? x / size : 0.0; };
+        g.uv = {scaled(dot(local, m_uvFrame.t) - m_uvOrigin.x, m_uvSize.x),
+                scaled(dot(local, m_uvFrame.b) - m_uvOrigin.y, m_uvSize.y)};
+        g.dpdu = m_uvFrame.t * m_uvSize.x;
+        g.dpdv = m_uvFrame.b * m_uvSize.y;
+        if (!m_normals.empty()) {
+            constexpr double h = 1e-6;  // in u, v: a millionth of the polygon
+            g.dndu = (shadingNormal(g.p + g.dpdu * h) - shadingNormal(g.p - g.dpdu * h)) / (2 * h);
+            g.dndv = (shadingNormal(g.p + g.dpdv * h) - shadingNormal(g.p - g.dpdv * h)) / (2 * h);
         }
     }
-    g.frontFace = dot(ray.d, g.ng) < 0;
     return g;
 }
 

@@ -32,7 +32,7 @@
 
 #include "geometry/frame.h"
 #include "geometry/primitives.h"
-#include "geometry/shape.h"
+#include "geometry/analytic_shape.h"
 
 namespace raylab {
 
@@ -41,7 +41,7 @@ namespace raylab {
 /// to the vertex mean, so it is accurate for polygons far from the origin.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
 
-class Polygon final : public Shape {
+class Polygon final : public AnalyticShape<Polygon> {
 public:
     /// Validation rules (each violation throws std::invalid_argument naming it):
     /// - at least 3 vertices, all finite; consecutive duplicates (including
@@ -59,13 +59,21 @@ public:
     /// Box of the vertices (grown by their planarity deviation), padded.
     Bounds3 bounds() const override;
     /// Plane hit (sidedness by the Newell normal, tMin < t < tMax), then the
-    /// inside test chosen in PolygonParams. u, v = in-plane coordinates of the
-    /// hit relative to the vertex mean, along the frame tangents.
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// inside test chosen in PolygonParams (or IntersectOptions::polygonTest
+    /// when set). ShapeHit u, v = in-plane coordinates of the hit relative to
+    /// the vertex mean, along the frame tangents.
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions& opt) const;
     /// Hit point (projected onto the plane), outward normal; the shading normal
     /// interpolates per-vertex normals with mean-value coordinates when given
     /// (flipped into the geometric normal's hemisphere if it points away).
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// uv: the hit's coordinates in the polygon's bounding rectangle, u along
+    /// the first edge (vertex 0 -> 1) and v along n × u, each scaled to [0, 1]
+    /// (a quadrilateral listed counter-clockwise from its lower-left corner
+    /// shows an image upright). dndu/dndv of interpolated normals are central
+    /// differences (mean-value coordinates have no compact derivative).
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "polygon"; }
 
     const std::vector<Vec3>& vertices() const { return m_vertices; }
@@ -73,9 +81,9 @@ public:
     const std::vector<Vec3>& normals() const { return m_normals; }
     const Vec3& normal() const { return m_frame.n; }
     FillRule fillRule() const { return m_rule; }
+    /// The inside test this polygon was created with.
     PolygonTest insideTest() const { return m_test; }
-    /// Switches the inside test (accuracy study and benchmarks).
-    void setInsideTest(PolygonTest test) { m_test = test; }
+    bool hasShadingNormals() const override { return !m_normals.empty(); }
 
     /// Use create(); public for std::make_unique.
     Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Vec3& normal,
@@ -83,13 +91,13 @@ public:
 
 private:
     template <class T>
-    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
-    template <class T>
     bool insideProjected(const Vec3T<T>& p) const;
     template <class T>
     bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const;
     bool accepts(int winding, int crossings) const;
     Vec3 interpolatedNormal(const Vec3& p) const;
+    /// The unit shading normal at plane point p (ng without vertex normals).
+    Vec3 shadingNormal(const Vec3& p) const;
 
     /// Coordinate axis `axis` of every vertex, in the precision T (structure of
     /// arrays: the inside tests pick axes at run time without branching per vertex).
@@ -103,6 +111,9 @@ private:
     Frame m_frame;                                ///< n = unit Newell normal
     Vec3 m_centroid;                              ///< vertex mean: the plane's reference point
     Bounds3 m_bounds;
+    Frame m_uvFrame;  ///< t along the first edge, b = n × t: the (u, v) axes
+    Vec2 m_uvOrigin;  ///< lower-left corner of the bounding rectangle in (t, b)
+    Vec2 m_uvSize;    ///< its extent along t and b
     int m_dropAxis;  ///< dominant axis of the normal (Projected test)
     FillRule m_rule;
     PolygonTest m_test;

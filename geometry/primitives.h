@@ -15,7 +15,9 @@
 
 namespace raylab {
 
-std::unique_ptr<Shape> makeSphere(const Vec3& centre, double radius);
+/// Sphere; `pole` orients its (u, v) parametrisation (docs/scene-format.md):
+/// the scene's up axis +y by default, like the camera's default up.
+std::unique_ptr<Shape> makeSphere(const Vec3& centre, double radius, const Vec3& pole = {0, 1, 0});
 
 /// Infinite plane through `point` with outward `normal`, given finite bounds:
 /// a square of half-size `halfExtent` around `point` (Embree drops infinite boxes).
@@ -42,9 +44,6 @@ struct QuadricParams {
 std::unique_ptr<Shape> makeQuadric(const QuadricParams& params);
 
 enum class FillRule { EvenOdd, NonZero };
-/// Inside test of planar polygons: the lecture's projected 2D crossing test, or
-/// the watertight ray-space test (shear to +z, edge functions).
-enum class PolygonTest { Projected, Watertight };
 
 struct PolygonParams {
     std::vector<Vec3> vertices;  ///< counter-clockwise seen from the front (outward) side

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/quadratic.h"
+#include "geometry/surface_parameters.h"
 #include "geometry/validate.h"
 
 namespace raylab {
@@ -112,7 +113,8 @@ double Quadric::evaluate(const Vec3& p) const {
 }
 
 template <class T>
-std::optional<ShapeHit> Quadric::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Quadric::intersectT(const Ray& ray, double tMin, double tMax,
+                                            const IntersectOptions&) const {
     using V = Vec3T<T>;
     const std::array<T, 6> m{T(m_m[0]), T(m_m[1]), T(m_m[2]), T(m_m[3]), T(m_m[4]), T(m_m[5])};
     const V g(m_g);
@@ -147,20 +149,55 @@ std::optional<ShapeHit> Quadric::intersectT(const Ray& ray, double tMin, double 
     return std::nullopt;
 }
 
-std::optional<ShapeHit> Quadric::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Quadric::intersectT<float>(const Ray&, double, double,
+                                                           const IntersectOptions&) const;
+template std::optional<ShapeHit> Quadric::intersectT<double>(const Ray&, double, double,
+                                                            const IntersectOptions&) const;
 
-SurfaceGeometry Quadric::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+SurfaceGeometry Quadric::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     g.p = ray.at(hit.t);
     const Vec3 q = g.p - m_centre;
-    Vec3 n = normalize(mulSym(m_m, q) * 2.0 + m_g);
+    const Vec3 gradient = mulSym(m_m, q) * 2.0 + m_g;
+    Vec3 n = normalize(gradient);
     if (n == Vec3{} || !isFinite(n)) n = -normalize(ray.d);  // singular point
     g.ng = g.ns = n;
     g.frontFace = dot(ray.d, n) < 0;
+    if (detail == SurfaceDetail::Complete) surfaceParameters(g, q, gradient);
     return g;
+}
+
+void Quadric::surfaceParameters(SurfaceGeometry& g, const Vec3& q, const Vec3& gradient) const {
+    // The parametrisation's frame: pole +y, as a sphere's default.
+    static const Frame frame = Frame::fromNormal({0, 1, 0});
+    const double s = length(q);
+    const Vec3 w = s > 0 ? q / s : Vec3{0, 0, 1};
+    const LocalParameters l = sphericalParameters(frame.toLocal(w));
+    g.uv = l.uv;
+    // p(u, v) = centre + s(u, v) w(u, v) with Q(p) = 0, so ∇Q·∂p/∂u = 0 gives
+    // ∂p/∂u = s (w_u - w (∇Q·w_u) / (∇Q·w)); likewise for v.
+    const Vec3 wu = frame.toWorld(l.dpdu), wv = frame.toWorld(l.dpdv);
+    const double along = dot(gradient, w);
+    const Vec3 dpdu = (wu - w * (dot(gradient, wu) / along)) * s;
+    const Vec3 dpdv = (wv - w * (dot(gradient, wv) / along)) * s;
+    const double gradientLength = length(gradient);
+    if (!(s > 0) || !isFinite(dpdu) || !isFinite(dpdv) || !(gradientLength > 0) ||
+        lengthSquared(cross(dpdu, dpdv)) == 0) {
+        // Centre on the surface, or its direction grazes it: any tangent frame.
+        const Frame tangents = Frame::fromNormal(g.ng);
+        g.dpdu = tangents.t;
+        g.dpdv = tangents.b;
+        return;
+    }
+    g.dpdu = dpdu;
+    g.dpdv = dpdv;
+    // n = ∇Q / |∇Q| with ∇Q = 2 M q + g: dn = (I - n nᵀ) 2 M dp / |∇Q|.
+    const auto dn = [&](const Vec3& dp) {
+        const Vec3 dGradient = mulSym(m_m, dp) * 2.0;
+        return (dGradient - g.ns * dot(g.ns, dGradient)) / gradientLength;
+    };
+    g.dndu = dn(dpdu);
+    g.dndv = dn(dpdv);
 }
 
 std::unique_ptr<Shape> makeQuadric(const QuadricParams& params) { return Quadric::create(params); }

@@ -14,11 +14,12 @@
 #include <optional>
 
 #include "geometry/primitives.h"
-#include "geometry/shape.h"
+#include "geometry/analytic_shape.h"
+#include "geometry/frame.h"
 
 namespace raylab {
 
-class Quadric final : public Shape {
+class Quadric final : public AnalyticShape<Quadric> {
 public:
     /// Validation rules (std::invalid_argument naming the problem):
     /// - all ten coefficients finite, and not all of A..I zero;
@@ -35,23 +36,34 @@ public:
     /// Closest accepted root whose point lies in the clip box (inclusive); both
     /// roots are tested, so a near root outside the box does not hide the far
     /// one. Facing from the exact root structure (the sign of dQ/dt at the root).
-    /// u = v = 0 (a general quadric has no natural parametrisation).
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// ShapeHit u = v = 0.
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions& opt) const;
     /// Hit point and the normalised gradient; at a singular point (a cone's
     /// apex, gradient 0) the normal faces the ray (-d / |d|) so it stays finite.
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// uv: a general quadric has no natural parametrisation; raylab uses the
+    /// spherical angles of the direction from centre() to the hit (as a
+    /// sphere's, pole +y), so an ellipsoid is mapped like a sphere. The
+    /// derivatives follow the surface point along that direction (implicit
+    /// differentiation of Q = 0); where the direction grazes the surface they
+    /// fall back to a tangent frame.
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "quadric"; }
 
     /// Q at a world point (for tests and diagnostics).
     double evaluate(const Vec3& p) const;
+    /// Origin of the centred coordinates and of the (u, v) parametrisation: the
+    /// ellipsoid's centre, else the clip box's centre.
+    const Vec3& centre() const { return m_centre; }
 
     /// Use create(); public for std::make_unique.
     Quadric(const std::array<double, 6>& m, const Vec3& g, double j, const Vec3& centre,
             const Bounds3& clip, bool hasClip, const Bounds3& bounds);
 
 private:
-    template <class T>
-    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
+    /// Fills uv and the derivatives of a hit at centred point q with gradient ∇Q.
+    void surfaceParameters(SurfaceGeometry& g, const Vec3& q, const Vec3& gradient) const;
 
     /// Symmetric M in centred coordinates: xx, yy, zz, xy, xz, yz.
     std::array<double, 6> m_m;

@@ -4,6 +4,7 @@
 
 #include "geometry/primitives.h"
 #include "geometry/quadratic.h"
+#include "geometry/surface_parameters.h"
 #include "geometry/validate.h"
 
 namespace raylab {
@@ -20,7 +21,8 @@ ShapeHit sphereHit(double t, const Vec3& local, double radius) {
 }
 }  // namespace
 
-Sphere::Sphere(const Vec3& centre, double radius) : m_centre(centre), m_radius(radius) {}
+Sphere::Sphere(const Vec3& centre, double radius, const Vec3& pole)
+    : m_centre(centre), m_radius(radius), m_frame(Frame::fromNormal(pole)) {}
 
 Bounds3 Sphere::bounds() const {
     const Vec3 r{m_radius, m_radius, m_radius};
@@ -28,7 +30,8 @@ Bounds3 Sphere::bounds() const {
 }
 
 template <class T>
-std::optional<ShapeHit> Sphere::intersectT(const Ray& ray, double tMin, double tMax) const {
+std::optional<ShapeHit> Sphere::intersectT(const Ray& ray, double tMin, double tMax,
+                                           const IntersectOptions&) const {
     using V = Vec3T<T>;
     const T r = static_cast<T>(m_radius);
     const V d(ray.d);
@@ -83,12 +86,12 @@ std::optional<ShapeHit> Sphere::intersectT(const Ray& ray, double tMin, double t
     return std::nullopt;
 }
 
-std::optional<ShapeHit> Sphere::intersect(const Ray& ray, double tMin, double tMax) const {
-    return m_precision == Precision::Float ? intersectT<float>(ray, tMin, tMax)
-                                           : intersectT<double>(ray, tMin, tMax);
-}
+template std::optional<ShapeHit> Sphere::intersectT<float>(const Ray&, double, double,
+                                                          const IntersectOptions&) const;
+template std::optional<ShapeHit> Sphere::intersectT<double>(const Ray&, double, double,
+                                                           const IntersectOptions&) const;
 
-SurfaceGeometry Sphere::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
+SurfaceGeometry Sphere::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const {
     SurfaceGeometry g;
     const Vec3 local = ray.o - m_centre + ray.d * hit.t;
     Vec3 n = normalize(local);
@@ -97,13 +100,23 @@ SurfaceGeometry Sphere::surfaceAt(const Ray& ray, const ShapeHit& hit) const {
     // Reproject onto the surface: removes the error o + t·d accumulates along t.
     g.p = m_centre + n * m_radius;
     g.frontFace = dot(ray.d, n) < 0;
+    if (detail == SurfaceDetail::Complete) {
+        const LocalParameters l = sphericalParameters(m_frame.toLocal(n));
+        g.uv = l.uv;
+        // n = ω(u, v) and p = centre + r ω: the normal's derivatives are ω's.
+        g.dndu = m_frame.toWorld(l.dpdu);
+        g.dndv = m_frame.toWorld(l.dpdv);
+        g.dpdu = g.dndu * m_radius;
+        g.dpdv = g.dndv * m_radius;
+    }
     return g;
 }
 
-std::unique_ptr<Shape> makeSphere(const Vec3& centre, double radius) {
+std::unique_ptr<Shape> makeSphere(const Vec3& centre, double radius, const Vec3& pole) {
     requireFinite("sphere", "centre", centre);
     requirePositive("sphere", "radius", radius);
-    return std::make_unique<Sphere>(centre, radius);
+    const Vec3 n = requireDirection("sphere", "pole", pole);
+    return std::make_unique<Sphere>(centre, radius, n);
 }
 
 }  // namespace raylab

@@ -9,35 +9,40 @@
 
 #include <optional>
 
-#include "geometry/shape.h"
+#include "geometry/analytic_shape.h"
+#include "geometry/frame.h"
 
 namespace raylab {
 
-class Sphere final : public Shape {
+class Sphere final : public AnalyticShape<Sphere> {
 public:
-    /// A sphere; parameters are validated by makeSphere().
-    Sphere(const Vec3& centre, double radius);
+    /// A sphere whose parametrisation has its north pole along the unit vector
+    /// `pole`; parameters are validated by makeSphere().
+    Sphere(const Vec3& centre, double radius, const Vec3& pole);
 
     /// The box centre ± radius, padded.
     Bounds3 bounds() const override;
     /// Closest accepted root with tMin < t < tMax. The near root is a front-face
     /// hit (entering) when the ray properly crosses the sphere; the far root and a
-    /// tangent double root are back-face hits. u, v = x and y components of the
-    /// unit outward normal at the hit (in [-1, 1]; z follows up to its sign).
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override;
-    /// Hit point (reprojected onto the sphere) and outward normal (p - centre) / r.
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override;
+    /// tangent double root are back-face hits. ShapeHit u, v = x and y components of
+    /// the unit outward normal at the hit (in [-1, 1]; z follows up to its sign).
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions& opt) const;
+    /// Hit point (reprojected onto the sphere) and outward normal (p - centre) / r;
+    /// uv = spherical angles about the pole (surface_parameters.h): u = φ/2π from
+    /// the frame's first tangent, v = 1 - θ/π.
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "sphere"; }
 
     const Vec3& centre() const { return m_centre; }
     double radius() const { return m_radius; }
+    const Vec3& pole() const { return m_frame.n; }
 
 private:
-    template <class T>
-    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax) const;
-
     Vec3 m_centre;
     double m_radius;
+    Frame m_frame;  ///< n = pole of the parametrisation
 };
 
 }  // namespace raylab

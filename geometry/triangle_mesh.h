@@ -1,37 +1,69 @@
 #pragma once
-// Indexed triangle mesh in world space (double precision; the Embree adaptor
-// converts to float relative to the camera). Embree's barycentric convention:
-// p = (1-u-v)·p0 + u·p1 + v·p2, shared by Embree and the project's own test.
+// Indexed triangle mesh in world space, one Shape primitive per triangle
+// (double precision; the Embree adaptor uploads it as native float triangles,
+// relative to the camera, which the shape declares through nativeTriangles()).
+// Embree's barycentric convention p = (1-b1-b2)·p0 + b1·p1 + b2·p2 is shared
+// by Embree and the project's own watertight test, so a hit from either
+// describes the same point of the same triangle.
+//
+// Surface parameters: the file's texture coordinates when the mesh has them,
+// otherwise pbrt's default per-triangle (0,0), (1,0), (1,1), i.e.
+// uv = (b1 + b2, b2). dpdu/dpdv solve p - p2 = (uv - uv2)·[dpdu dpdv] over the
+// triangle; dndu/dndv are the derivatives of the normalised interpolated
+// vertex normal (zero for a flat triangle).
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
-#include "geometry/bounds.h"
+#include "geometry/shape.h"
 #include "geometry/vec.h"
+#include "geometry/vec2.h"
 
 namespace raylab {
 
-struct TriangleMesh {
+class TriangleMesh final : public Shape {
+public:
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  ///< per-vertex, same size as positions, or empty
+    std::vector<Vec2> uvs;      ///< per-vertex texture coordinates, same size, or empty
     std::vector<std::array<uint32_t, 3>> triangles;
 
+    TriangleMesh() { m_sides = Sidedness::Both; }
+
     bool hasNormals() const { return !normals.empty(); }
+    bool hasUvs() const { return !uvs.empty(); }
     size_t triangleCount() const { return triangles.size(); }
 
-    Bounds3 bounds() const {
-        Bounds3 b;
-        for (const Vec3& p : positions) b.expand(p);
-        return b;
-    }
+    uint32_t primitiveCount() const override { return uint32_t(triangles.size()); }
+    Bounds3 bounds() const override;
+    Bounds3 bounds(uint32_t prim) const override;
 
-    Bounds3 triangleBounds(size_t i) const {
-        const auto& t = triangles[i];
-        Bounds3 b(positions[t[0]], positions[t[1]]);
-        b.expand(positions[t[2]]);
-        return b;
-    }
+    /// The watertight test (geometry/triangle.h), with the mesh's sidedness.
+    std::optional<ShapeHit> intersect(uint32_t prim, const Ray& ray, double tMin, double tMax,
+                                      const IntersectOptions& opt) const override;
+    /// One loop over every triangle with the watertight test's per-ray
+    /// constants computed once (the naive accelerator's inner loop).
+    std::optional<PrimitiveHit> intersectAny(const Ray& ray, double tMin, double tMax,
+                                             const IntersectOptions& opt) const override;
+    bool occludedAny(const Ray& ray, double tMin, double tMax,
+                     const IntersectOptions& opt) const override;
+
+    /// Surface data recomputed in double from the ray and the triangle alone
+    /// (the hit's t and barycentrics are only a fallback): every accelerator
+    /// that picks this triangle, in float or double, gets bit-identical data.
+    SurfaceGeometry surfaceAt(uint32_t prim, const Ray& ray, const ShapeHit& hit,
+                              const IntersectOptions& opt, SurfaceDetail detail) const override;
+
+    const char* kind() const override { return "triangle mesh"; }
+    /// Every index within positions, normals and uvs sized like positions.
+    void validate() const override;
+    const TriangleMesh* nativeTriangles() const override { return this; }
+    bool hasShadingNormals() const override { return hasNormals(); }
+
+private:
+    /// Whether a hit from direction d on triangle `prim` is on an accepted side.
+    bool acceptsFacing(uint32_t prim, const Vec3& d) const;
 };
 
 }  // namespace raylab

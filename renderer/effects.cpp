@@ -42,7 +42,7 @@ EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
         }
     }
     for (const Object& o : scene.objects)
-        if (o.mesh && o.mesh->hasNormals()) e.smoothNormals = true;
+        if (o.shape && o.shape->hasShadingNormals()) e.smoothNormals = true;
     e.antialiasing = options.spp > 1 || options.adaptiveThreshold > 0;
     e.aovs = options.wantAovs;
     return e;

@@ -2,13 +2,9 @@
 
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
+#include "geometry/triangle_mesh.h"
 
 namespace raylab {
-
-void setPolygonInsideTest(Scene& scene, PolygonTest test) {
-    for (Object& o : scene.objects)
-        if (auto* p = dynamic_cast<Polygon*>(o.shape.get())) p->setInsideTest(test);
-}
 
 size_t triangulatePolygons(Scene& scene) {
     auto mesh = std::make_shared<TriangleMesh>();
@@ -48,7 +44,7 @@ size_t triangulatePolygons(Scene& scene) {
         m.name = "triangulated polygons";
         m.material = faceMaterials.front();
         m.faceMaterials = std::move(faceMaterials);
-        m.mesh = std::move(mesh);
+        m.shape = std::move(mesh);
         kept.push_back(std::move(m));
     }
     scene.objects = std::move(kept);

@@ -1,7 +1,7 @@
 #pragma once
-// Scene-wide choices for planar polygons, applied after loading: which inside
-// test the analytic polygons use, or whether they become Embree triangles, so
-// the three can be compared in speed and image (raylab render --polygons).
+// `raylab render --polygons triangles`: planar polygons become Embree
+// triangles, so they can be compared in speed and image with the analytic
+// polygons' two inside tests (IntersectOptions::polygonTest).
 
 #include <string>
 
@@ -9,9 +9,6 @@
 #include "renderer/scene.h"
 
 namespace raylab {
-
-/// Switches every analytic polygon to `test`.
-void setPolygonInsideTest(Scene& scene, PolygonTest test);
 
 /// Replaces every analytic polygon by triangles (ear clipping of its vertices,
 /// wound like the polygon, per-vertex normals kept), gathered into one

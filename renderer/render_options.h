@@ -4,9 +4,8 @@
 
 #include <string>
 
-#include "geometry/shape.h"
 #include "geometry/spawn.h"
-#include "renderer/accel/accelerator.h"
+#include "renderer/accel/accel_options.h"
 
 namespace raylab {
 
@@ -30,9 +29,8 @@ struct RenderOptions {
 
     int threads = 0;          ///< 0 = all cores
     std::string accel = "embree";
-    AccelOptions accelOptions;
+    AccelOptions accelOptions;  ///< also the intersectors' accuracy knobs (precision, polygons)
     SpawnSettings spawn;      ///< self-intersection strategy
-    Precision precision = Precision::Double;
 
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)

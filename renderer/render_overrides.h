@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "geometry/shape.h"
+
 namespace raylab {
 
 struct RenderOverrides {
@@ -14,6 +16,7 @@ struct RenderOverrides {
     std::optional<double> adaptiveThreshold, minWeight, epsilon;
     std::optional<uint64_t> seed;
     std::optional<std::string> accel, bvhQuality, precision, effects;
+    std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     bool spd = false;
     bool robust = false;
 };

@@ -29,7 +29,10 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
                                                            : AccelOptions::BvhQuality::Medium;
     }
     if (o.robust) r.accelOptions.robust = true;
-    if (o.precision) r.precision = *o.precision == "float" ? Precision::Float : Precision::Double;
+    if (o.precision)
+        r.accelOptions.intersect.precision =
+            *o.precision == "float" ? Precision::Float : Precision::Double;
+    if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;
@@ -88,11 +91,6 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
     throw InputError(scene.sourcePath, sizeFromFile ? scene.image.sizeLine : 0,
                      what + ", more than the " + mib(limit->bytes) + " MiB that " + limit->source +
                          " allows");
-}
-
-void applyPrecision(Scene& scene, Precision precision) {
-    for (Object& o : scene.objects)
-        if (o.shape) o.shape->setPrecision(precision);
 }
 
 }  // namespace raylab

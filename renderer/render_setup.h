@@ -41,7 +41,4 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options);
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
                        const std::optional<MemoryLimit>& limit);
 
-/// Sets the arithmetic of every analytic shape.
-void applyPrecision(Scene& scene, Precision precision);
-
 }  // namespace raylab

@@ -93,7 +93,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) counters.cameraHits++;
 
-    const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit);
+    const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect);
     const Material& m = m_scene.materials[si.material];
     // Normals on the side the ray arrives from; `entering` is false when the
     // ray is inside the object (it hit the back of the outward normal).

@@ -8,32 +8,11 @@
 #include <string>
 
 #include "geometry/ray.h"
-#include "geometry/vec.h"
+#include "renderer/accel/accel_options.h"
+#include "renderer/accel/hit.h"
 #include "renderer/scene.h"
 
 namespace raylab {
-
-/// Build options; only the Embree back end reads the BVH ones.
-struct AccelOptions {
-    enum class BvhQuality { Low, Medium, High };
-    BvhQuality quality = BvhQuality::Medium;
-    bool robust = false;   ///< RTC_SCENE_FLAG_ROBUST
-    /// Geometry is handed to Embree in float relative to this point (normally
-    /// the eye), so far-from-origin scenes keep their precision near the camera.
-    Vec3 origin{0, 0, 0};
-};
-
-/// "low", "medium" or "high": the spelling of --bvh-quality and the JSON key.
-inline const char* bvhQualityName(AccelOptions::BvhQuality q) {
-    switch (q) {
-        case AccelOptions::BvhQuality::Low:
-            return "low";
-        case AccelOptions::BvhQuality::High:
-            return "high";
-        default:
-            return "medium";
-    }
-}
 
 class Accelerator {
 public:
@@ -44,11 +23,19 @@ public:
     virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
     /// "embree" or "naive".
     virtual std::string name() const = 0;
+    /// Wall-clock seconds the constructor spent building the structure
+    /// (Embree: geometry conversion and BVH, device creation excluded).
+    virtual double buildSeconds() const = 0;
 };
 
 /// Builds the named accelerator ("embree" or "naive") over the scene, which
-/// must outlive it. Throws std::invalid_argument for an unknown name.
+/// must outlive it. Throws std::invalid_argument for an unknown name and for
+/// geometry the accelerator cannot take (validateShapes).
 std::unique_ptr<Accelerator> makeAccelerator(const std::string& name, const Scene& scene,
                                              const AccelOptions& options = {});
+
+/// \brief Every object's Shape::validate(), before an accelerator touches a
+///   primitive. \throws std::invalid_argument "ACCEL: object 'NAME' (KIND): why".
+void validateShapes(const Scene& scene, const char* accelName);
 
 }  // namespace raylab

@@ -1,7 +1,8 @@
 #include "renderer/accel/naive_accelerator.h"
 
-#include <stdexcept>
-#include <string>
+#include <chrono>
+
+#include "renderer/timing.h"
 
 namespace raylab {
 
@@ -15,89 +16,26 @@ bool traceable(const Ray& ray, double tMin, double tMax) {
 
 }  // namespace
 
-Surface Surface::analytic(const Shape& shape, uint32_t object) {
-    Surface s;
-    s.m_shape = &shape;
-    s.m_object = object;
-    return s;
-}
-
-Surface Surface::triangle(const TriangleMesh& mesh, uint32_t object, uint32_t prim,
-                          Sidedness sides) {
-    Surface s;
-    s.m_sides = sides;
-    const auto& idx = mesh.triangles[prim];
-    s.m_vertices = {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
-    s.m_object = object;
-    s.m_prim = prim;
-    return s;
-}
-
-bool Surface::acceptsTriangleFacing(const Vec3& d) const {
-    if (m_sides == Sidedness::Both) return true;
-    const Vec3 n = triangleNormal(m_vertices[0], m_vertices[1], m_vertices[2]);
-    return acceptsFacing(m_sides, dot(d, n) < 0);
-}
-
-std::optional<Hit> Surface::hit(const Ray& ray, const WatertightRay& wray, double tMin,
-                                double tMax) const {
-    if (m_shape) {
-        const auto h = m_shape->intersect(ray, tMin, tMax);
-        if (!h) return std::nullopt;
-        return Hit{h->t, m_object, m_prim, h->u, h->v};
-    }
-    const auto h = intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax);
-    if (!h || !acceptsTriangleFacing(ray.d)) return std::nullopt;
-    return Hit{h->t, m_object, m_prim, h->u, h->v};
-}
-
-bool Surface::occluded(const Ray& ray, const WatertightRay& wray, double tMin, double tMax) const {
-    if (m_shape) return m_shape->occluded(ray, tMin, tMax);
-    return acceptsTriangleFacing(ray.d) &&
-           intersectTriangle(wray, m_vertices[0], m_vertices[1], m_vertices[2], tMin, tMax)
-               .has_value();
-}
-
-Bounds3 Surface::bounds() const {
-    if (m_shape) return m_shape->bounds();
-    Bounds3 b(m_vertices[0], m_vertices[1]);
-    b.expand(m_vertices[2]);
-    return b;
-}
-
-NaiveAccelerator::NaiveAccelerator(const Scene& scene) {
-    m_surfaces.reserve(scene.primitiveCount());
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const Object& o = scene.objects[i];
-        const auto object = static_cast<uint32_t>(i);
-        if (o.isMesh()) {
-            // Same check as the Embree back end: a bad index would read garbage.
-            for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
-                for (const uint32_t index : o.mesh->triangles[t])
-                    if (index >= o.mesh->positions.size())
-                        throw std::invalid_argument("naive: mesh '" + o.name + "': triangle " +
-                                                    std::to_string(t) + " uses vertex " +
-                                                    std::to_string(index) + " of " +
-                                                    std::to_string(o.mesh->positions.size()));
-            for (size_t t = 0; t < o.mesh->triangleCount(); ++t)
-                m_surfaces.push_back(
-                    Surface::triangle(*o.mesh, object, static_cast<uint32_t>(t), o.meshSides));
-        } else if (o.shape) {
-            m_surfaces.push_back(Surface::analytic(*o.shape, object));
-        }
-    }
+NaiveAccelerator::NaiveAccelerator(const Scene& scene, const AccelOptions& options)
+    : m_options(options.intersect) {
+    const auto start = std::chrono::steady_clock::now();
+    validateShapes(scene, "naive");
+    m_shapes.reserve(scene.objects.size());
+    for (const Object& o : scene.objects) m_shapes.push_back(o.shape.get());
+    m_buildSeconds = secondsSince(start);
 }
 
 std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
     if (!traceable(ray, tMin, tMax)) return std::nullopt;
-    const WatertightRay wray(ray);  // per-ray constants, computed once
     std::optional<Hit> best;
-    // Each hit shrinks the interval, so later surfaces only count if closer;
-    // on an exact tie the earlier surface in scene order wins.
-    for (const Surface& s : m_surfaces) {
-        if (auto h = s.hit(ray, wray, tMin, tMax)) {
-            tMax = h->t;
-            best = h;
+    // Each hit shrinks the interval, so later objects only count if closer;
+    // on an exact tie the earlier object in scene order wins.
+    for (uint32_t i = 0; i < m_shapes.size(); ++i) {
+        const Shape* shape = m_shapes[i];
+        if (!shape) continue;
+        if (const auto h = shape->intersectAny(ray, tMin, tMax, m_options)) {
+            tMax = h->hit.t;
+            best = Hit{h->hit.t, i, h->prim, h->hit.u, h->hit.v};
         }
     }
     return best;
@@ -105,9 +43,8 @@ std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, doub
 
 bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {
     if (!traceable(ray, tMin, tMax)) return false;
-    const WatertightRay wray(ray);
-    for (const Surface& s : m_surfaces)
-        if (s.occluded(ray, wray, tMin, tMax)) return true;
+    for (const Shape* shape : m_shapes)
+        if (shape && shape->occludedAny(ray, tMin, tMax, m_options)) return true;
     return false;
 }
 

@@ -57,7 +57,7 @@ long RayRecorder::findParent(const std::vector<PathEntry>& path, const Ray& ray,
 
 void RayRecorder::pushHit(ThreadState& ts, const Ray& ray, const Hit& hit, int depth) const {
     // The same surface data the integrator computes for this hit.
-    const SurfaceInteraction si = m_scene.surfaceAt(ray, hit);
+    const SurfaceInteraction si = m_scene.surfaceAt(ray, hit, m_options.accelOptions.intersect);
     const Material& m = m_scene.materials[si.material];
     PathEntry e;
     e.p = si.p;

@@ -54,6 +54,7 @@ public:
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
     /// The wrapped accelerator's name.
     std::string name() const override { return m_inner.name(); }
+    double buildSeconds() const override { return m_inner.buildSeconds(); }
 
     /// \brief Every ray recorded since the last call, ray trees in row-major
     ///   order of their camera ray, each tree in tracing order; clears the buffers.

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/triangle_mesh.h"
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
@@ -561,7 +562,8 @@ void SceneReader::setMeshSides(const Fields& f, size_t firstObject) {
     // Meshes default to both sides: OBJ files from other tools often mix
     // windings, and a one-sided mesh with a flipped face shows a hole.
     const Sidedness s = sides(f, Sidedness::Both);
-    for (size_t i = firstObject; i < m_scene.objects.size(); ++i) m_scene.objects[i].meshSides = s;
+    for (size_t i = firstObject; i < m_scene.objects.size(); ++i)
+        m_scene.objects[i].shape->setSidedness(s);
 }
 
 void SceneReader::addShape(const Fields& f, std::unique_ptr<Shape> shape, uint32_t material,
@@ -580,7 +582,7 @@ void SceneReader::addMesh(std::shared_ptr<TriangleMesh> mesh, uint32_t material,
                           std::vector<uint32_t> faceMaterials, const std::string& name) {
     Object obj;
     obj.name = name;
-    obj.mesh = std::move(mesh);
+    obj.shape = std::move(mesh);
     obj.material = material;
     obj.faceMaterials = std::move(faceMaterials);
     m_scene.objects.push_back(std::move(obj));

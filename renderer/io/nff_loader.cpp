@@ -37,6 +37,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/triangle_mesh.h"
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
@@ -556,13 +557,13 @@ private:
         if (mesh.triangles.empty()) return;
         Object o;
         o.name = name;
-        o.meshSides = sides;
         o.material = materials.front();
         // One material for all faces needs no per-face table.
         bool uniform = true;
         for (uint32_t m : materials) uniform = uniform && m == o.material;
         if (!uniform) o.faceMaterials = std::move(materials);
-        o.mesh = std::make_shared<TriangleMesh>(std::move(mesh));
+        o.shape = std::make_shared<TriangleMesh>(std::move(mesh));
+        o.shape->setSidedness(sides);
         m_objects.push_back(std::move(o));
     }
 

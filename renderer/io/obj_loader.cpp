@@ -782,7 +782,7 @@ void appendObjModel(Scene& scene, const ObjModel& model, const std::string& base
         Object obj;
         obj.name = baseName;
         if (model.parts.size() > 1 && !part.mesh->hasNormals()) obj.name += " (flat)";
-        obj.mesh = part.mesh;
+        obj.shape = part.mesh;
         if (overrideMaterial) {
             obj.material = *overrideMaterial;
         } else {

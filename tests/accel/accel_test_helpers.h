@@ -11,11 +11,13 @@
 #include <string>
 #include <utility>
 
+#include "geometry/analytic_shape.h"
 #include "geometry/primitives.h"
 #include "geometry/random.h"
 #include "geometry/shape.h"
 #include "geometry/triangle_mesh.h"
 #include "renderer/scene.h"
+#include "shape_queries.h"
 
 namespace raylab::accel_test {
 
@@ -35,11 +37,11 @@ inline Object shapeObject(std::string name, std::unique_ptr<Shape> shape, uint32
 }
 
 /// Object wrapping a mesh.
-inline Object meshObject(std::string name, std::shared_ptr<const TriangleMesh> mesh,
+inline Object meshObject(std::string name, std::shared_ptr<TriangleMesh> mesh,
                          uint32_t material = 0) {
     Object o;
     o.name = std::move(name);
-    o.mesh = std::move(mesh);
+    o.shape = std::move(mesh);
     o.material = material;
     return o;
 }
@@ -128,7 +130,7 @@ inline Scene randomScene(uint64_t seed, int spheres, const Vec3& offset = {0, 0,
 /// A test-only analytic shape: the plane z = height, hit from either side,
 /// with INFINITE bounds (what an unclipped plane would report). Embree drops
 /// such boxes silently; the accelerator must clamp them.
-class UnboundedPlaneZ final : public Shape {
+class UnboundedPlaneZ final : public AnalyticShape<UnboundedPlaneZ> {
 public:
     explicit UnboundedPlaneZ(double height) : m_height(height) { m_sides = Sidedness::Both; }
     Bounds3 bounds() const override {
@@ -137,13 +139,15 @@ public:
         b.hi = {kInf, kInf, m_height};
         return b;
     }
-    std::optional<ShapeHit> intersect(const Ray& ray, double tMin, double tMax) const override {
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray& ray, double tMin, double tMax,
+                                       const IntersectOptions&) const {
         const double t = (m_height - ray.o.z) / ray.d.z;
         if (!(t > tMin && t < tMax)) return std::nullopt;
         const Vec3 p = ray.at(t);
         return ShapeHit{t, p.x, p.y};
     }
-    SurfaceGeometry surfaceAt(const Ray& ray, const ShapeHit& hit) const override {
+    SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail) const {
         SurfaceGeometry g;
         g.p = {hit.u, hit.v, m_height};
         g.ng = g.ns = {0, 0, 1};
@@ -157,7 +161,7 @@ private:
 };
 
 /// A test-only shape whose bounds are NaN (a broken primitive).
-class NanBoundsShape final : public Shape {
+class NanBoundsShape final : public AnalyticShape<NanBoundsShape> {
 public:
     Bounds3 bounds() const override {
         const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -166,10 +170,11 @@ public:
         b.hi = {1, 1, 1};
         return b;
     }
-    std::optional<ShapeHit> intersect(const Ray&, double, double) const override {
+    template <class T>
+    std::optional<ShapeHit> intersectT(const Ray&, double, double, const IntersectOptions&) const {
         return std::nullopt;
     }
-    SurfaceGeometry surfaceAt(const Ray&, const ShapeHit&) const override { return {}; }
+    SurfaceGeometry surface(const Ray&, const ShapeHit&, SurfaceDetail) const { return {}; }
     const char* kind() const override { return "nan-bounds"; }
 };
 

@@ -65,7 +65,7 @@ Agreement compare(const Scene& scene, const Accelerator& embree, const Accelerat
         }
         ++a.hits;
         if (e->object == n->object && e->prim == n->prim) {
-            const bool analytic = !scene.objects[n->object].isMesh();
+            const bool analytic = !scene.objects[n->object].shape->nativeTriangles();
             const bool same = analytic
                                   ? (e->t == n->t && e->u == n->u && e->v == n->v)
                                   : sameSurface(scene.surfaceAt(ray, *e), scene.surfaceAt(ray, *n));

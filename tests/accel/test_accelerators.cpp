@@ -42,19 +42,17 @@ TEST_CASE("accel: makeAccelerator names and unknown names") {
                       "unknown accelerator '' (expected embree or naive)");
 }
 
-TEST_CASE("accel: naive list has one surface per analytic object and per triangle") {
+TEST_CASE("accel: one primitive per analytic object and per triangle, with its own box") {
     const Scene scene = stackScene();
-    const NaiveAccelerator naive(scene);
-    REQUIRE(naive.surfaces().size() == 2 + 1 + 2 + 1);
-    // Order follows the scene: quad triangles 0 and 1, sphere, quad triangles, plane.
-    CHECK(naive.surfaces()[0].object() == 0);
-    CHECK(naive.surfaces()[1].prim() == 1);
-    CHECK(naive.surfaces()[2].object() == 1);
-    const Bounds3 b = naive.surfaces()[2].bounds();  // sphere box ~[0,2]²×[2,4]
+    // Scene order: quad (2 triangles), sphere, quad (2 triangles), plane.
+    REQUIRE(scene.primitiveCount() == 2 + 1 + 2 + 1);
+    CHECK(scene.objects[0].primitiveCount() == 2);
+    CHECK(scene.objects[1].primitiveCount() == 1);
+    const Bounds3 b = scene.objects[1].shape->bounds(0);  // sphere box ~[0,2]²×[2,4]
     CHECK(b.contains({0, 0, 2}));
     CHECK(b.contains({2, 2, 4}));
     CHECK_FALSE(b.contains({1, 1, 4.01}));
-    const Bounds3 t = naive.surfaces()[1].bounds();  // triangle (0,0,0),(2,2,0),(0,2,0)
+    const Bounds3 t = scene.objects[0].shape->bounds(1);  // triangle (0,0,0),(2,2,0),(0,2,0)
     CHECK(t.lo == Vec3{0, 0, 0});
     CHECK(t.hi == Vec3{2, 2, 0});
 }

@@ -162,7 +162,7 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
         Scene scene;
         scene.objects.push_back(shapeObject("broken", std::make_unique<NanBoundsShape>()));
         CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
-                             "embree: object 'broken' (nan-bounds) has NaN bounds",
+                             "embree: object 'broken' (nan-bounds): NaN bounds",
                              std::invalid_argument);
     }
     SUBCASE("index out of range") {
@@ -171,10 +171,10 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
         mesh->triangles[1][2] = 4;
         scene.objects.push_back(meshObject("bad", mesh));
         CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
-                             "embree: mesh 'bad': triangle 1 uses vertex 4 of 4",
+                             "embree: object 'bad' (triangle mesh): triangle 1 uses vertex 4 of 4",
                              std::invalid_argument);
         CHECK_THROWS_WITH_AS(NaiveAccelerator{scene},
-                             "naive: mesh 'bad': triangle 1 uses vertex 4 of 4",
+                             "naive: object 'bad' (triangle mesh): triangle 1 uses vertex 4 of 4",
                              std::invalid_argument);
     }
     SUBCASE("non-finite vertex") {
@@ -183,7 +183,7 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
         mesh->positions[2].y = std::numeric_limits<double>::quiet_NaN();
         scene.objects.push_back(meshObject("nan", mesh));
         CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
-                             "embree: mesh 'nan': vertex 2 is not finite or too far from the "
+                             "embree: object 'nan' (triangle mesh): vertex 2 is not finite or too far from the "
                              "origin",
                              std::invalid_argument);
     }
@@ -223,7 +223,7 @@ TEST_CASE("embree: bare rtcIntersect1 replay, masks and the occlusion marker") {
     for (const Ray& ray : {toBall, toQuad}) {
         RTCRayHit rh = rayHit(accel, ray, 0, kInf);
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        ctx.init(nullptr, 0, kInf);
         rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
         const auto bare = accel.decode(rh, ctx);
         const auto full = accel.intersect(ray, 0, kInf);
@@ -237,7 +237,7 @@ TEST_CASE("embree: bare rtcIntersect1 replay, masks and the occlusion marker") {
         // The analytic callback fills Embree's hit record per the contract.
         RTCRayHit rh = rayHit(accel, toBall, 0, kInf);
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, &toBall, 0, kInf);
+        ctx.init(&toBall, 0, kInf);
         rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
         CHECK(rh.hit.geomID == accel.userGeometryId());
         CHECK(rh.hit.primID == 0);
@@ -255,7 +255,7 @@ TEST_CASE("embree: bare rtcIntersect1 replay, masks and the occlusion marker") {
         RTCRayHit rh = rayHit(accel, ray, 0, kInf);
         rh.ray.mask = 0;
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, &ray, 0, kInf);
+        ctx.init(&ray, 0, kInf);
         rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
         CHECK(rh.hit.geomID == RTC_INVALID_GEOMETRY_ID);
 
@@ -265,7 +265,7 @@ TEST_CASE("embree: bare rtcIntersect1 replay, masks and the occlusion marker") {
         rtcOccluded1(accel.rtcHandle(), &ctx.rtc, &r);
         CHECK(r.tfar == -std::numeric_limits<float>::infinity());
         REQUIRE(accel.toEmbreeRay(ray, 0, 3.0, r));  // both hits are beyond t = 3
-        EmbreeAccelerator::initContext(ctx, &ray, 0, 3.0);
+        ctx.init(&ray, 0, 3.0);
         rtcOccluded1(accel.rtcHandle(), &ctx.rtc, &r);
         CHECK(r.tfar == 3.0f);
     }
@@ -284,7 +284,7 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
     for (int i = 0; i < kRays; ++i) {
         RTCRayHit rh = rayHit(accel, rays[i], 0, kInf);
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        ctx.init(nullptr, 0, kInf);
         rtcIntersect1(accel.rtcHandle(), &ctx.rtc, &rh);
         single[i] = accel.decode(rh, ctx);
     }
@@ -319,7 +319,7 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
         }
         // Even with a double ray in the context, 8-wide callbacks use the lanes.
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, &rays[base], 0, kInf);
+        ctx.init(&rays[base], 0, kInf);
         rtcIntersect8(valid, accel.rtcHandle(), &ctx.rtc, &packet);
         for (int k = 0; k < 8; ++k) {
             RTCRayHit rh{};
@@ -339,7 +339,7 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
         std::vector<RTCRayHit> stream(kRays);
         for (int i = 0; i < kRays; ++i) stream[i] = rayHit(accel, rays[i], 0, kInf);
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, nullptr, 0, kInf);
+        ctx.init(nullptr, 0, kInf);
         rtcIntersect1M(accel.rtcHandle(), &ctx.rtc, stream.data(), kRays, sizeof(RTCRayHit));
         for (int i = 0; i < kRays; ++i) {
             const auto h = accel.decode(stream[i], ctx);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "geometry/triangle_mesh.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/io/scene_loader.h"
 
@@ -23,9 +24,9 @@ Scene triangleScene(Sidedness sides) {
     auto mesh = std::make_shared<TriangleMesh>();
     mesh->positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
     mesh->triangles = {{0, 1, 2}};
+    mesh->setSidedness(sides);
     Object o;
-    o.mesh = mesh;
-    o.meshSides = sides;
+    o.shape = mesh;
     s.objects.push_back(std::move(o));
     return s;
 }
@@ -71,7 +72,7 @@ TEST_CASE("json \"sides\": a triangulated polygon faces the way the analytic one
                                  R"(", "triangulate": true}]})";
         Scene scene = loadJsonScene(text, "sides.json");
         REQUIRE(scene.objects.size() == 2);
-        REQUIRE(bool(scene.objects[1].mesh));
+        REQUIRE(scene.objects[1].shape->nativeTriangles() != nullptr);
         // Each polygon alone in a scene, so every hit is its own.
         Scene analytic, triangles;
         analytic.materials = triangles.materials = scene.materials;

@@ -106,7 +106,7 @@ TEST_CASE("scene: interpolated vertex normals, and ng when they cancel") {
     // Triangle 0 uses vertices 0, 1, 2 with weights (1-u-v, u, v) = (0.25, 0.5, 0.25)
     // at (1.5, 0.5): ns ∝ 0.25·(0,0,1) + 0.5·(1,0,0) + 0.25·(0,1,0) = (0.5, 0.25, 0.25).
     mesh->normals = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    scene.objects[0].mesh = mesh;
+    scene.objects[0].shape = mesh;
     const Ray ray{{1.5, 0.5, 1}, {0, 0, -1}};
     const SurfaceInteraction si = scene.surfaceAt(ray, Hit{1.0, 0, 0});
     const double len = std::sqrt(0.375);
@@ -119,7 +119,7 @@ TEST_CASE("scene: interpolated vertex normals, and ng when they cancel") {
     // at the midpoint of edge 0-1 (u = 0.5, v = 0) -> zero vector -> falls back to ng.
     auto cancel = quadMesh(0, 0, 2, 2, 0);
     cancel->normals = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    scene.objects[0].mesh = cancel;
+    scene.objects[0].shape = cancel;
     const SurfaceInteraction c = scene.surfaceAt(Ray{{1, 0, 1}, {0, 0, -1}}, Hit{1.0, 0, 0});
     CHECK(c.ns == Vec3{0, 0, 1});
     CHECK(allFinite(c));
@@ -171,7 +171,7 @@ TEST_CASE("scene: analytic hits are forwarded to the shape") {
     scene.objects.push_back(shapeObject("s", makeSphere({0, 0, 0}, 1), 2));
     // Unit sphere, ray from z = -5 along +z: entry at t = 4, p = (0,0,-1), n = -z.
     const Ray ray{{0, 0, -5}, {0, 0, 1}};
-    const auto h = scene.objects[0].shape->intersect(ray, 0, kInf);
+    const auto h = intersect1(*scene.objects[0].shape, ray, 0, kInf);
     REQUIRE(h);
     const SurfaceInteraction si = scene.surfaceAt(ray, Hit{h->t, 0, 0, h->u, h->v});
     CHECK(si.t == 4.0);

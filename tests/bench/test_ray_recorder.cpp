@@ -13,11 +13,11 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/accel/ray_recorder.h"
+#include "renderer/accel/embree_replay.h"
 #include "renderer/effects.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
-#include "tools/bench/embree_replay.h"
 #include "tools/bench/scene_generators.h"
 
 using namespace raylab;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "geometry/sphere.h"
+#include "geometry/triangle_mesh.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/io/scene_loader.h"
@@ -147,12 +148,13 @@ TEST_CASE("height field: one mesh of 2·g² triangles, g = round(sqrt(N/2))") {
     const Scene s = makeHeightFieldScene(1000);
     CHECK(s.primitiveCount() == 968);
     REQUIRE(s.objects.size() == 1);
-    REQUIRE(s.objects[0].isMesh());
-    CHECK(s.objects[0].mesh->positions.size() == 529);
-    CHECK(s.objects[0].mesh->normals.size() == 529);
+    const TriangleMesh* mesh = s.objects[0].shape->nativeTriangles();
+    REQUIRE(mesh);
+    CHECK(mesh->positions.size() == 529);
+    CHECK(mesh->normals.size() == 529);
     // Corner vertices at (±1, ±1): the grid spans [-1, 1]².
-    CHECK(s.objects[0].mesh->positions.front().x == -1.0);
-    CHECK(s.objects[0].mesh->positions.back().y == 1.0);
+    CHECK(mesh->positions.front().x == -1.0);
+    CHECK(mesh->positions.back().y == 1.0);
 }
 
 TEST_CASE("polygon field: exactly N polygons") {

@@ -30,7 +30,6 @@ inline std::unique_ptr<PreparedScene> prepare(const std::string& path,
     auto p = std::make_unique<PreparedScene>();
     p->scene = loadScene(path);
     p->options = resolveRenderOptions(p->scene, overrides);
-    applyPrecision(p->scene, p->options.precision);
     p->accel = makeAccelerator(p->options.accel, p->scene, p->options.accelOptions);
     p->effects = analyseEffects(p->scene, p->options);
     return p;

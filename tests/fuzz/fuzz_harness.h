@@ -42,7 +42,6 @@ inline std::string exerciseScene(Scene& scene) {
     tiny.threads = 1;
     tiny.accel = "naive";
     const RenderOptions options = resolveRenderOptions(scene, tiny);
-    applyPrecision(scene, options.precision);
     const std::unique_ptr<Accelerator> accel =
         makeAccelerator(options.accel, scene, options.accelOptions);
     const EffectSet effects = analyseEffects(scene, options);

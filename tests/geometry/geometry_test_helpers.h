@@ -11,6 +11,7 @@
 #endif
 
 #include "geometry/vec.h"
+#include "shape_queries.h"
 #include "geometry/random.h"
 
 namespace raylab::test {

@@ -11,6 +11,7 @@
 #include "geometry/cone.h"
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 using raylab::test::FlushDenormals;
@@ -40,31 +41,31 @@ TEST_CASE("cone: cylinder side hits, facing, normals, u v") {
     // front, normal -x, v = z / h = 0.5) and leaves at x = 1 (t = 6, back).
     for (Precision prec : {Precision::Double, Precision::Float}) {
         auto cyl = cone({0, 0, 0}, 1, {0, 0, 2}, 1);
-        cyl->setPrecision(prec);
+        const IntersectOptions opt = withPrecision(prec);
         CHECK(std::string(cyl->kind()) == "cylinder");
         const Ray ray{{-5, 0, 1}, {1, 0, 0}};
-        auto hit = cyl->intersect(ray, 0, kInf);
+        auto hit = intersect1(*cyl, ray, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == 4.0);
         CHECK(hit->v == 0.5);
-        const SurfaceGeometry g = cyl->surfaceAt(ray, *hit);
+        const SurfaceGeometry g = surface1(*cyl, ray, *hit, opt);
         checkVec(g.ng, {-1, 0, 0});
         checkVec(g.p, {-1, 0, 1});
         CHECK(g.frontFace);
         cyl->setSidedness(Sidedness::Inside);
-        hit = cyl->intersect(ray, 0, kInf);
+        hit = intersect1(*cyl, ray, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == 6.0);
-        CHECK_FALSE(cyl->surfaceAt(ray, *hit).frontFace);
-        checkVec(cyl->surfaceAt(ray, *hit).ng, {1, 0, 0});
+        CHECK_FALSE(surface1(*cyl, ray, *hit, opt).frontFace);
+        checkVec(surface1(*cyl, ray, *hit, opt).ng, {1, 0, 0});
         // |d| = 2: t halves.
         cyl->setSidedness(Sidedness::Outside);
-        CHECK(cyl->intersect(Ray{{-5, 0, 1}, {2, 0, 0}}, 0, kInf)->t == 2.0);
+        CHECK(intersect1(*cyl, Ray{{-5, 0, 1}, {2, 0, 0}}, 0, kInf, opt)->t == 2.0);
         // Above the top (z = 3) or below the base: the infinite cylinder's hits are clipped.
-        CHECK_FALSE(cyl->intersect(Ray{{-5, 0, 3}, {1, 0, 0}}, 0, kInf));
-        CHECK_FALSE(cyl->intersect(Ray{{-5, 0, -0.1}, {1, 0, 0}}, 0, kInf));
+        CHECK_FALSE(intersect1(*cyl, Ray{{-5, 0, 3}, {1, 0, 0}}, 0, kInf, opt));
+        CHECK_FALSE(intersect1(*cyl, Ray{{-5, 0, -0.1}, {1, 0, 0}}, 0, kInf, opt));
         // Passing 1.01 from the axis: miss.
-        CHECK_FALSE(cyl->intersect(Ray{{-5, 1.01, 1}, {1, 0, 0}}, 0, kInf));
+        CHECK_FALSE(intersect1(*cyl, Ray{{-5, 1.01, 1}, {1, 0, 0}}, 0, kInf, opt));
     }
 }
 
@@ -79,29 +80,28 @@ TEST_CASE("cone: ray along the axis hits only caps, without NaN") {
             for (Precision prec : {Precision::Double, Precision::Float}) {
                 auto open = cone({0, 0, 0}, 1, {0, 0, 2}, 1);
                 auto capped = cone({0, 0, 0}, 1, {0, 0, 2}, 1, true);
-                open->setPrecision(prec);
-                capped->setPrecision(prec);
+                const IntersectOptions opt = withPrecision(prec);
                 open->setSidedness(Sidedness::Both);
                 const Ray fromBelow{{0.2, 0.1, -1}, d};
-                CHECK_FALSE(open->intersect(fromBelow, 0, kInf));
-                auto hit = capped->intersect(fromBelow, 0, kInf);
+                CHECK_FALSE(intersect1(*open, fromBelow, 0, kInf, opt));
+                auto hit = intersect1(*capped, fromBelow, 0, kInf, opt);
                 REQUIRE(hit);
                 CHECK(hit->t == doctest::Approx(1.0));
-                SurfaceGeometry g = capped->surfaceAt(fromBelow, *hit);
+                SurfaceGeometry g = surface1(*capped, fromBelow, *hit, opt);
                 CHECK(g.ng == Vec3{0, 0, -1});
                 CHECK(g.frontFace);
 
                 const Ray inside{{0.2, 0.1, 1}, d};
-                CHECK_FALSE(capped->intersect(inside, 0, kInf));  // back face, one-sided
+                CHECK_FALSE(intersect1(*capped, inside, 0, kInf, opt));  // back face, one-sided
                 capped->setSidedness(Sidedness::Both);
-                hit = capped->intersect(inside, 0, kInf);
+                hit = intersect1(*capped, inside, 0, kInf, opt);
                 REQUIRE(hit);
                 CHECK(hit->t == doctest::Approx(1.0));
-                g = capped->surfaceAt(inside, *hit);
+                g = surface1(*capped, inside, *hit, opt);
                 CHECK(g.ng == Vec3{0, 0, 1});
                 CHECK_FALSE(g.frontFace);
                 // Outside the radius: misses the caps too.
-                CHECK_FALSE(capped->intersect(Ray{{2, 0, -1}, d}, 0, kInf));
+                CHECK_FALSE(intersect1(*capped, Ray{{2, 0, -1}, d}, 0, kInf, opt));
             }
         }
     }
@@ -113,10 +113,10 @@ TEST_CASE("cone: ray through the rim hits at the rim (inclusive)") {
     auto open = cone({0, 0, 0}, 1, {0, 0, 2}, 1);
     auto capped = cone({0, 0, 0}, 1, {0, 0, 2}, 1, true);
     const Ray ray{{2, 0, 3}, {-1, 0, -1}};
-    CHECK(open->intersect(ray, 0, kInf)->t == 1.0);
-    CHECK(capped->intersect(ray, 0, kInf)->t == 1.0);
+    CHECK(intersect1(*open, ray, 0, kInf)->t == 1.0);
+    CHECK(intersect1(*capped, ray, 0, kInf)->t == 1.0);
     // Straight down exactly on the rim circle: the top cap's edge (ρ = r), t = 1.
-    CHECK(capped->intersect(Ray{{1, 0, 3}, {0, 0, -1}}, 0, kInf)->t == 1.0);
+    CHECK(intersect1(*capped, Ray{{1, 0, 3}, {0, 0, -1}}, 0, kInf)->t == 1.0);
 }
 
 TEST_CASE("cone: cone side, normal and the mirror nappe") {
@@ -126,17 +126,17 @@ TEST_CASE("cone: cone side, normal and the mirror nappe") {
     // From (-5, 0, 0.5) along +x: r(0.5) = 0.5, enters at x = -0.5, t = 4.5; outward normal
     // ∝ (x/ρ, y/ρ, -k) = (-1, 0, 1).
     const Ray ray{{-5, 0, 0.5}, {1, 0, 0}};
-    const auto hit = c->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*c, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 4.5);
-    const SurfaceGeometry g = c->surfaceAt(ray, *hit);
+    const SurfaceGeometry g = surface1(*c, ray, *hit);
     checkVec(g.ng, normalize(Vec3{-1, 0, 1}));
     CHECK(g.frontFace);
     // At z = 1.5 the infinite double cone has x = ±0.5 (the mirror nappe): rejected.
     c->setSidedness(Sidedness::Both);
-    CHECK_FALSE(c->intersect(Ray{{-5, 0, 1.5}, {1, 0, 0}}, 0, kInf));
+    CHECK_FALSE(intersect1(*c, Ray{{-5, 0, 1.5}, {1, 0, 0}}, 0, kInf));
     // Below the base (z = -0.5): the lower nappe continues, r = 1.5, but z < 0: rejected.
-    CHECK_FALSE(c->intersect(Ray{{-5, 0, -0.5}, {1, 0, 0}}, 0, kInf));
+    CHECK_FALSE(intersect1(*c, Ray{{-5, 0, -0.5}, {1, 0, 0}}, 0, kInf));
 }
 
 TEST_CASE("cone: ray parallel to a generator (a = 0) has one real root") {
@@ -146,20 +146,20 @@ TEST_CASE("cone: ray parallel to a generator (a = 0) has one real root") {
     // centre at t = 0.5): a back-face hit. The reversed ray from (-1.5, 0, 1.5) enters at t = 1.
     auto c = cone({0, 0, 0}, 1, {0, 0, 1}, 0);
     for (Precision prec : {Precision::Double, Precision::Float}) {
-        c->setPrecision(prec);
+        const IntersectOptions opt = withPrecision(prec);
         c->setSidedness(Sidedness::Outside);
         const Ray out{{0.5, 0, -0.5}, {-1, 0, 1}};
-        CHECK_FALSE(c->intersect(out, 0, kInf));
+        CHECK_FALSE(intersect1(*c, out, 0, kInf, opt));
         c->setSidedness(Sidedness::Inside);
-        auto hit = c->intersect(out, 0, kInf);
+        auto hit = intersect1(*c, out, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == doctest::Approx(1.0).epsilon(1e-6));
         c->setSidedness(Sidedness::Outside);
         const Ray in{{-1.5, 0, 1.5}, {1, 0, -1}};
-        hit = c->intersect(in, 0, kInf);
+        hit = intersect1(*c, in, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == doctest::Approx(1.0).epsilon(1e-6));
-        CHECK(c->surfaceAt(in, *hit).frontFace);
+        CHECK(surface1(*c, in, *hit, opt).frontFace);
     }
 }
 
@@ -169,16 +169,16 @@ TEST_CASE("cone: ray through the apex gives a finite normal") {
     auto c = cone({0, 0, 0}, 1, {0, 0, 1}, 0);
     c->setSidedness(Sidedness::Both);
     for (const Ray& ray : {Ray{{0, 0, 3}, {0, 0, -1}}, Ray{{-1, 0, 3}, {1, 0, -2}}}) {
-        const auto hit = c->intersect(ray, 0, kInf);
+        const auto hit = intersect1(*c, ray, 0, kInf);
         REQUIRE(hit);
-        const SurfaceGeometry g = c->surfaceAt(ray, *hit);
+        const SurfaceGeometry g = surface1(*c, ray, *hit);
         CHECK(isFinite(g.ng));
         CHECK(length(g.ng) == doctest::Approx(1.0));
         CHECK(g.p.z == doctest::Approx(1.0));
     }
-    const auto axial = c->intersect(Ray{{0, 0, 3}, {0, 0, -1}}, 0, kInf);
+    const auto axial = intersect1(*c, Ray{{0, 0, 3}, {0, 0, -1}}, 0, kInf);
     CHECK(axial->t == 2.0);
-    CHECK(c->surfaceAt(Ray{{0, 0, 3}, {0, 0, -1}}, *axial).ng == Vec3{0, 0, 1});
+    CHECK(surface1(*c, Ray{{0, 0, 3}, {0, 0, -1}}, *axial).ng == Vec3{0, 0, 1});
 }
 
 TEST_CASE("cone: truncated cone with caps") {
@@ -186,22 +186,22 @@ TEST_CASE("cone: truncated cone with caps") {
     // From (-5,0,1) along +x: r(1) = 1.5, t = 3.5, normal ∝ (-1, 0, 0.5).
     auto c = cone({0, 0, 0}, 2, {0, 0, 2}, 1, true);
     const Ray down{{0.5, 0, 5}, {0, 0, -1}};
-    auto hit = c->intersect(down, 0, kInf);
+    auto hit = intersect1(*c, down, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 3.0);
     CHECK(hit->u == 0.5);  // ρ / r1
-    CHECK(c->surfaceAt(down, *hit).ng == Vec3{0, 0, 1});
+    CHECK(surface1(*c, down, *hit).ng == Vec3{0, 0, 1});
     const Ray side{{-5, 0, 1}, {1, 0, 0}};
-    hit = c->intersect(side, 0, kInf);
+    hit = intersect1(*c, side, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 3.5);
-    checkVec(c->surfaceAt(side, *hit).ng, normalize(Vec3{-1, 0, 0.5}));
+    checkVec(surface1(*c, side, *hit).ng, normalize(Vec3{-1, 0, 0.5}));
     // Ray from below at ρ = 1.8: base cap (r0 = 2) at t = 1.
     const Ray up{{1.8, 0, -1}, {0, 0, 1}};
-    hit = c->intersect(up, 0, kInf);
+    hit = intersect1(*c, up, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 1.0);
-    CHECK(c->surfaceAt(up, *hit).ng == Vec3{0, 0, -1});
+    CHECK(surface1(*c, up, *hit).ng == Vec3{0, 0, -1});
 }
 
 TEST_CASE("cone: tilted cylinder") {
@@ -212,10 +212,10 @@ TEST_CASE("cone: tilted cylinder") {
     auto c = cone(base, 1, base + axis * 10, 1);
     const Vec3 onAxis = base + axis * 5;
     const Ray ray{onAxis + Vec3{5, 0, 0}, {-1, 0, 0}};
-    const auto hit = c->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*c, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == doctest::Approx(4.0).epsilon(1e-14));
-    checkVec(c->surfaceAt(ray, *hit).ng, {1, 0, 0});
+    checkVec(surface1(*c, ray, *hit).ng, {1, 0, 0});
     CHECK(hit->v == doctest::Approx(0.5).epsilon(1e-14));
 }
 
@@ -262,10 +262,10 @@ TEST_CASE("cone: random rays land on the surface with consistent facing") {
         const Ray ray{o, (target - o) * rng.uniform(0.3, 3)};
         for (Sidedness s : {Sidedness::Outside, Sidedness::Inside}) {
             c->setSidedness(s);
-            const auto hit = c->intersect(ray, 0, kInf);
+            const auto hit = intersect1(*c, ray, 0, kInf);
             if (!hit) continue;
             ++hits;
-            const SurfaceGeometry g = c->surfaceAt(ray, *hit);
+            const SurfaceGeometry g = surface1(*c, ray, *hit);
             const Vec3 rel = g.p - base;
             const double z = dot(rel, a);
             const double rho = length(rel - a * z);

@@ -9,6 +9,7 @@
 
 #include "geometry/disk.h"
 #include "geometry/primitives.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -20,40 +21,40 @@ TEST_CASE("disk: hits within the radius, rim included, misses beyond") {
     // Centre (1,2,3), normal +z, r = 2. From (2,2,10) along -z: t = 7, local (1,0) -> u = 0.5.
     auto disk = makeDisk({1, 2, 3}, {0, 0, 1}, 2);
     for (Precision prec : {Precision::Double, Precision::Float}) {
-        disk->setPrecision(prec);
+        const IntersectOptions opt = withPrecision(prec);
         const Ray ray{{2, 2, 10}, {0, 0, -1}};
-        const auto hit = disk->intersect(ray, 0, kInf);
+        const auto hit = intersect1(*disk, ray, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == 7.0);
         CHECK(hit->u == 0.5);
         CHECK(hit->v == 0.0);
-        const SurfaceGeometry g = disk->surfaceAt(ray, *hit);
+        const SurfaceGeometry g = surface1(*disk, ray, *hit, opt);
         CHECK(g.p == Vec3{2, 2, 3});
         CHECK(g.ng == Vec3{0, 0, 1});
         CHECK(g.frontFace);
         // Local (0, -1.9): inside; (2, 0) exactly on the rim: inside; (2.1, 0): outside.
-        CHECK(disk->intersect(Ray{{1, 0.1, 10}, {0, 0, -1}}, 0, kInf));
-        CHECK(disk->intersect(Ray{{3, 2, 10}, {0, 0, -1}}, 0, kInf));
-        CHECK_FALSE(disk->intersect(Ray{{3.1, 2, 10}, {0, 0, -1}}, 0, kInf));
+        CHECK(intersect1(*disk, Ray{{1, 0.1, 10}, {0, 0, -1}}, 0, kInf, opt));
+        CHECK(intersect1(*disk, Ray{{3, 2, 10}, {0, 0, -1}}, 0, kInf, opt));
+        CHECK_FALSE(intersect1(*disk, Ray{{3.1, 2, 10}, {0, 0, -1}}, 0, kInf, opt));
         // Diagonal (1.45, 1.45): distance 2.05 > 2, outside although |u|, |v| < r.
-        CHECK_FALSE(disk->intersect(Ray{{2.45, 3.45, 10}, {0, 0, -1}}, 0, kInf));
+        CHECK_FALSE(intersect1(*disk, Ray{{2.45, 3.45, 10}, {0, 0, -1}}, 0, kInf, opt));
     }
 }
 
 TEST_CASE("disk: sidedness and parallel rays") {
     auto disk = makeDisk({0, 0, 0}, {0, 1, 0}, 1);  // normal +y
     const Ray below{{0.2, -1, 0.1}, {0, 2, 0}};     // t = 0.5, back face
-    CHECK_FALSE(disk->intersect(below, 0, kInf));
+    CHECK_FALSE(intersect1(*disk, below, 0, kInf));
     disk->setSidedness(Sidedness::Inside);
-    CHECK(disk->intersect(below, 0, kInf)->t == 0.5);
-    CHECK_FALSE(disk->intersect(Ray{{0, 1, 0}, {0, -1, 0}}, 0, kInf));
+    CHECK(intersect1(*disk, below, 0, kInf)->t == 0.5);
+    CHECK_FALSE(intersect1(*disk, Ray{{0, 1, 0}, {0, -1, 0}}, 0, kInf));
     disk->setSidedness(Sidedness::Both);
-    const auto hit = disk->intersect(below, 0, kInf);
+    const auto hit = intersect1(*disk, below, 0, kInf);
     REQUIRE(hit);
-    CHECK_FALSE(disk->surfaceAt(below, *hit).frontFace);
-    CHECK_FALSE(disk->intersect(Ray{{0, 0, 0}, {1, 0, 0}}, -kInf, kInf));  // in the plane
-    CHECK_FALSE(disk->intersect(Ray{{0, 1, 0}, {1, 0, 1}}, 0, kInf));      // parallel
-    CHECK_FALSE(disk->intersect(below, 0.5, kInf));                        // strict tMin
+    CHECK_FALSE(surface1(*disk, below, *hit).frontFace);
+    CHECK_FALSE(intersect1(*disk, Ray{{0, 0, 0}, {1, 0, 0}}, -kInf, kInf));  // in the plane
+    CHECK_FALSE(intersect1(*disk, Ray{{0, 1, 0}, {1, 0, 1}}, 0, kInf));      // parallel
+    CHECK_FALSE(intersect1(*disk, below, 0.5, kInf));                        // strict tMin
 }
 
 TEST_CASE("disk: tight bounds r·sqrt(1 - n_i²)") {

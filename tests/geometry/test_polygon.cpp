@@ -15,6 +15,7 @@
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -40,26 +41,26 @@ TEST_CASE("polygon: unit square in the XY plane") {
     for (PolygonTest test : kTests) {
         for (Precision prec : kPrecisions) {
             auto sq = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, test);
-            sq->setPrecision(prec);
+            const IntersectOptions opt = withPrecision(prec);
             const Ray ray{{0.25, 0.5, 1}, {0, 0, -1}};
-            const auto hit = sq->intersect(ray, 0, kInf);
+            const auto hit = intersect1(*sq, ray, 0, kInf, opt);
             REQUIRE(hit);
             CHECK(hit->t == 1.0);
-            const SurfaceGeometry g = sq->surfaceAt(ray, *hit);
+            const SurfaceGeometry g = surface1(*sq, ray, *hit, opt);
             CHECK(g.ng == Vec3{0, 0, 1});
             CHECK(g.ns == Vec3{0, 0, 1});
             CHECK(g.p == Vec3{0.25, 0.5, 0});
             CHECK(g.frontFace);
-            CHECK_FALSE(sq->intersect(Ray{{1.5, 0.5, 1}, {0, 0, -1}}, 0, kInf));
-            CHECK_FALSE(sq->intersect(Ray{{0.5, -0.01, 1}, {0, 0, -1}}, 0, kInf));
+            CHECK_FALSE(intersect1(*sq, Ray{{1.5, 0.5, 1}, {0, 0, -1}}, 0, kInf, opt));
+            CHECK_FALSE(intersect1(*sq, Ray{{0.5, -0.01, 1}, {0, 0, -1}}, 0, kInf, opt));
             // Back face (from below): rejected by the default one-sided rule.
-            CHECK_FALSE(sq->intersect(Ray{{0.5, 0.5, -1}, {0, 0, 1}}, 0, kInf));
+            CHECK_FALSE(intersect1(*sq, Ray{{0.5, 0.5, -1}, {0, 0, 1}}, 0, kInf, opt));
             sq->setSidedness(Sidedness::Both);
             const Ray below{{0.5, 0.5, -1}, {0, 0, 1}};
-            const auto back = sq->intersect(below, 0, kInf);
+            const auto back = intersect1(*sq, below, 0, kInf, opt);
             REQUIRE(back);
-            CHECK_FALSE(sq->surfaceAt(below, *back).frontFace);
-            CHECK(sq->surfaceAt(below, *back).ng == Vec3{0, 0, 1});
+            CHECK_FALSE(surface1(*sq, below, *back, opt).frontFace);
+            CHECK(surface1(*sq, below, *back, opt).ng == Vec3{0, 0, 1});
         }
     }
 }
@@ -70,20 +71,20 @@ TEST_CASE("polygon: squares in the YZ and XZ planes") {
         // From (5, 0.3, 0.6) along -x: t = 3.
         auto yz = polygon({{2, 0, 0}, {2, 1, 0}, {2, 1, 1}, {2, 0, 1}}, test);
         const Ray r1{{5, 0.3, 0.6}, {-1, 0, 0}};
-        const auto h1 = yz->intersect(r1, 0, kInf);
+        const auto h1 = intersect1(*yz, r1, 0, kInf);
         REQUIRE(h1);
         CHECK(h1->t == 3.0);
-        CHECK(yz->surfaceAt(r1, *h1).ng == Vec3{1, 0, 0});
-        CHECK_FALSE(yz->intersect(Ray{{5, 1.3, 0.6}, {-1, 0, 0}}, 0, kInf));
+        CHECK(surface1(*yz, r1, *h1).ng == Vec3{1, 0, 0});
+        CHECK_FALSE(intersect1(*yz, Ray{{5, 1.3, 0.6}, {-1, 0, 0}}, 0, kInf));
         // y = -1, CCW seen from +y: (0,0,1) × (1,0,1) = (0,1,0). From (0.5, 3, 0.5) along
         // (0,-2,0): distance 4, t = 2.
         auto xz = polygon({{0, -1, 0}, {0, -1, 1}, {1, -1, 1}, {1, -1, 0}}, test);
         const Ray r2{{0.5, 3, 0.5}, {0, -2, 0}};
-        const auto h2 = xz->intersect(r2, 0, kInf);
+        const auto h2 = intersect1(*xz, r2, 0, kInf);
         REQUIRE(h2);
         CHECK(h2->t == 2.0);
-        CHECK(xz->surfaceAt(r2, *h2).ng == Vec3{0, 1, 0});
-        CHECK_FALSE(xz->intersect(Ray{{0.5, 3, 1.5}, {0, -2, 0}}, 0, kInf));
+        CHECK(surface1(*xz, r2, *h2).ng == Vec3{0, 1, 0});
+        CHECK_FALSE(intersect1(*xz, Ray{{0.5, 3, 1.5}, {0, -2, 0}}, 0, kInf));
     }
 }
 
@@ -94,11 +95,11 @@ TEST_CASE("polygon: oblique ray and tilted polygon") {
     // back (d·n > 0); from (0.2, 0.2, 2) along -z it is front-facing at t = 1.4.
     for (PolygonTest test : kTests) {
         auto tri = polygon({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, test);
-        const auto hit = tri->intersect(Ray{{0.2, 0.2, 2}, {0, 0, -1}}, 0, kInf);
+        const auto hit = intersect1(*tri, Ray{{0.2, 0.2, 2}, {0, 0, -1}}, 0, kInf);
         REQUIRE(hit);
         CHECK(hit->t == doctest::Approx(1.4).epsilon(1e-15));
-        CHECK_FALSE(tri->intersect(Ray{{0.2, 0.2, -1}, {0, 0, 1}}, 0, kInf));
-        CHECK_FALSE(tri->intersect(Ray{{0.6, 0.6, 2}, {0, 0, -1}}, 0, kInf));  // x + y > 1
+        CHECK_FALSE(intersect1(*tri, Ray{{0.2, 0.2, -1}, {0, 0, 1}}, 0, kInf));
+        CHECK_FALSE(intersect1(*tri, Ray{{0.6, 0.6, 2}, {0, 0, -1}}, 0, kInf));  // x + y > 1
         CHECK(tri->bounds().contains({0.2, 0.2, 0.6}));
     }
 }
@@ -113,9 +114,9 @@ TEST_CASE("polygon: collinear leading vertices give the right Newell normal") {
     for (PolygonTest test : kTests) {
         auto p = polygon(v, test);
         const Ray ray{{1.5, 0.5, 3}, {0, 0, -1}};
-        const auto hit = p->intersect(ray, 0, kInf);
+        const auto hit = intersect1(*p, ray, 0, kInf);
         REQUIRE(hit);
-        CHECK(p->surfaceAt(ray, *hit).ng == Vec3{0, 0, 1});
+        CHECK(surface1(*p, ray, *hit).ng == Vec3{0, 0, 1});
     }
 }
 
@@ -123,9 +124,9 @@ TEST_CASE("polygon: rays parallel to the plane or in it miss without NaN") {
     for (PolygonTest test : kTests) {
         auto sq = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, test);
         sq->setSidedness(Sidedness::Both);
-        CHECK_FALSE(sq->intersect(Ray{{-1, 0.5, 0}, {1, 0, 0}}, -kInf, kInf));  // in the plane
-        CHECK_FALSE(sq->intersect(Ray{{-1, 0.5, 1}, {1, 0, 0}}, 0, kInf));      // above
-        CHECK_FALSE(sq->intersect(Ray{{0.5, 0.5, 1}, {0, 0, 0}}, 0, kInf));     // no direction
+        CHECK_FALSE(intersect1(*sq, Ray{{-1, 0.5, 0}, {1, 0, 0}}, -kInf, kInf));  // in the plane
+        CHECK_FALSE(intersect1(*sq, Ray{{-1, 0.5, 1}, {1, 0, 0}}, 0, kInf));      // above
+        CHECK_FALSE(intersect1(*sq, Ray{{0.5, 0.5, 1}, {0, 0, 0}}, 0, kInf));     // no direction
     }
 }
 
@@ -135,9 +136,9 @@ TEST_CASE("polygon: concave L shape") {
         for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
             auto l = polygon({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}},
                              test, rule);
-            CHECK(l->intersect(Ray{{0.5, 1.5, 1}, {0, 0, -1}}, 0, kInf));
-            CHECK(l->intersect(Ray{{1.5, 0.5, 1}, {0, 0, -1}}, 0, kInf));
-            CHECK_FALSE(l->intersect(Ray{{1.5, 1.5, 1}, {0, 0, -1}}, 0, kInf));
+            CHECK(intersect1(*l, Ray{{0.5, 1.5, 1}, {0, 0, -1}}, 0, kInf));
+            CHECK(intersect1(*l, Ray{{1.5, 0.5, 1}, {0, 0, -1}}, 0, kInf));
+            CHECK_FALSE(intersect1(*l, Ray{{1.5, 1.5, 1}, {0, 0, -1}}, 0, kInf));
         }
     }
 }
@@ -160,12 +161,12 @@ TEST_CASE("polygon: pentagram centre is inside under NonZero, outside under Even
     for (PolygonTest test : kTests) {
         auto nonzero = polygon(star, test, FillRule::NonZero);
         auto evenodd = polygon(star, test, FillRule::EvenOdd);
-        CHECK(nonzero->intersect(centre, 0, kInf));
-        CHECK_FALSE(evenodd->intersect(centre, 0, kInf));
-        CHECK(nonzero->intersect(tip, 0, kInf));
-        CHECK(evenodd->intersect(tip, 0, kInf));
-        CHECK_FALSE(nonzero->intersect(notch, 0, kInf));
-        CHECK_FALSE(evenodd->intersect(notch, 0, kInf));
+        CHECK(intersect1(*nonzero, centre, 0, kInf));
+        CHECK_FALSE(intersect1(*evenodd, centre, 0, kInf));
+        CHECK(intersect1(*nonzero, tip, 0, kInf));
+        CHECK(intersect1(*evenodd, tip, 0, kInf));
+        CHECK_FALSE(intersect1(*nonzero, notch, 0, kInf));
+        CHECK_FALSE(intersect1(*evenodd, notch, 0, kInf));
     }
 }
 
@@ -179,9 +180,9 @@ TEST_CASE("polygon: per-vertex normals are interpolated (mean-value = barycentri
     const Vec3 n0{0, 0, 1}, n1 = normalize(Vec3{1, 0, 1}), n2 = normalize(Vec3{0, 1, 1});
 
     const Ray ray{{0.3, 0.5, 1}, {0, 0, -1}};
-    const auto hit = tri->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*tri, ray, 0, kInf);
     REQUIRE(hit);
-    const SurfaceGeometry g = tri->surfaceAt(ray, *hit);
+    const SurfaceGeometry g = surface1(*tri, ray, *hit);
     const Vec3 expected = normalize(n0 * 0.2 + n1 * 0.3 + n2 * 0.5);
     CHECK(g.ns.x == doctest::Approx(expected.x).epsilon(1e-12));
     CHECK(g.ns.y == doctest::Approx(expected.y).epsilon(1e-12));
@@ -191,11 +192,11 @@ TEST_CASE("polygon: per-vertex normals are interpolated (mean-value = barycentri
     // Edge midpoint (0.5, 0): halfway between n0 and n1. At vertex 2: n2.
     const Ray edge{{0.5, 0, 1}, {0, 0, -1}};
     const Vec3 mid = normalize(n0 + n1);
-    const Vec3 ge = tri->surfaceAt(edge, ShapeHit{1.0, 0, 0}).ns;
+    const Vec3 ge = surface1(*tri, edge, ShapeHit{1.0, 0, 0}).ns;
     CHECK(ge.x == doctest::Approx(mid.x).epsilon(1e-12));
     CHECK(ge.z == doctest::Approx(mid.z).epsilon(1e-12));
     const Ray vertex{{0, 1, 1}, {0, 0, -1}};
-    const Vec3 gv = tri->surfaceAt(vertex, ShapeHit{1.0, 0, 0}).ns;
+    const Vec3 gv = surface1(*tri, vertex, ShapeHit{1.0, 0, 0}).ns;
     CHECK(gv.y == doctest::Approx(n2.y).epsilon(1e-12));
     CHECK(gv.z == doctest::Approx(n2.z).epsilon(1e-12));
 
@@ -206,7 +207,7 @@ TEST_CASE("polygon: per-vertex normals are interpolated (mean-value = barycentri
     auto sq = makePolygon(q);
     const Vec3 sum = normalize(Vec3{-1, -1, 2}) + normalize(Vec3{1, -1, 2}) +
                      normalize(Vec3{1, 1, 2}) + normalize(Vec3{-1, 1, 4});
-    const Vec3 c = sq->surfaceAt(Ray{{1, 1, 1}, {0, 0, -1}}, ShapeHit{1.0, 0, 0}).ns;
+    const Vec3 c = surface1(*sq, Ray{{1, 1, 1}, {0, 0, -1}}, ShapeHit{1.0, 0, 0}).ns;
     CHECK(c.x == doctest::Approx(normalize(sum).x).epsilon(1e-12));
     CHECK(c.y == doctest::Approx(normalize(sum).y).epsilon(1e-12));
 }
@@ -278,7 +279,7 @@ Fan makeFan(PolygonTest test, Precision precision) {
         p.vertices = {fan.centre, fan.mids[(k + 3) % 4], corners[k], fan.mids[k]};
         p.test = test;
         auto quad = makePolygon(p);
-        quad->setPrecision(precision);
+        const IntersectOptions opt = withPrecision(precision);
         fan.quads.push_back(std::move(quad));
     }
     return fan;
@@ -305,7 +306,7 @@ FanResult shootFan(const Fan& fan, test::Rng& rng, int count, bool centreOnly) {
         const Vec3 o = target + dir * rng.uniform(0.5, 20);
         const Ray ray{o, target - o};
         int hits = 0;
-        for (const auto& q : fan.quads) hits += q->intersect(ray, 0, kInf).has_value();
+        for (const auto& q : fan.quads) hits += intersect1(*q, ray, 0, kInf).has_value();
         ++r.rays;
         if (hits == 0)
             ++r.zero;
@@ -360,7 +361,7 @@ TEST_CASE("polygon: watertight test with exact zeros (ray exactly through a vert
             std::vector<Vec3> v{centre, ring[k], ring[(k + 1) % ring.size()]};
             if (k % 4 == 1) v.insert(v.begin() + 2, (ring[k] + ring[(k + 1) % ring.size()]) * 0.5);
             auto p = polygon(v, PolygonTest::Watertight);
-            p->setPrecision(prec);
+            const IntersectOptions opt = withPrecision(prec);
             fan.push_back(std::move(p));
         }
         // Targets: the centre vertex, points on the spokes, and spoke midpoints.
@@ -376,7 +377,7 @@ TEST_CASE("polygon: watertight test with exact zeros (ray exactly through a vert
                     const Vec3 d{dx, dy, -4};  // dominant axis z; shear factors are dyadic
                     const Ray ray{target - d * 2.0, d};
                     int hits = 0;
-                    for (const auto& p : fan) hits += p->intersect(ray, 0, kInf).has_value();
+                    for (const auto& p : fan) hits += intersect1(*p, ray, 0, kInf).has_value();
                     ++rays;
                     exactlyOne += hits == 1;
                 }
@@ -407,7 +408,7 @@ TEST_CASE("polygon: closed cube of quads, rays from inside through edges and cor
             for (const auto& f : faces) {
                 auto q = polygon({corner(f[0]), corner(f[1]), corner(f[2]), corner(f[3])}, t);
                 q->setSidedness(Sidedness::Inside);
-                q->setPrecision(prec);
+                const IntersectOptions opt = withPrecision(prec);
                 quads.push_back(std::move(q));
             }
             test::Rng rng(31);
@@ -424,7 +425,7 @@ TEST_CASE("polygon: closed cube of quads, rays from inside through edges and cor
                 }
                 int hits = 0;
                 for (const auto& q : quads) {
-                    hits += q->intersect(Ray{o, target - o}, 0, kInf).has_value();
+                    hits += intersect1(*q, Ray{o, target - o}, 0, kInf).has_value();
                 }
                 ++rays[kind];
                 zero[kind] += hits == 0;
@@ -468,7 +469,7 @@ TEST_CASE("polygon: timing of the two inside tests (reported)") {
             int hits = 0;
             const auto start = std::chrono::steady_clock::now();
             for (int rep = 0; rep < 20; ++rep) {
-                for (const Ray& r : rays) hits += p->intersect(r, 0, kInf).has_value();
+                for (const Ray& r : rays) hits += intersect1(*p, r, 0, kInf).has_value();
             }
             const auto elapsed = std::chrono::steady_clock::now() - start;
             const double ns = std::chrono::duration<double, std::nano>(elapsed).count() / 20000;

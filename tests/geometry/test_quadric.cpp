@@ -12,6 +12,7 @@
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
 #include "geometry/quadric.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -37,14 +38,14 @@ TEST_CASE("quadric: paraboloid z = x² + y² hit along its axis (a = 0)") {
     auto p =
         makeQuadric(clipped(coefficients(1, 1, 0, 0, 0, 0, 0, 0, -1, 0), {-2, -2, -1}, {2, 2, 4}));
     const Ray ray{{0.3, 0.4, 10}, {0, 0, -1}};
-    CHECK_FALSE(p->intersect(ray, 0, kInf));  // one-sided: back face
+    CHECK_FALSE(intersect1(*p, ray, 0, kInf));  // one-sided: back face
     p->setSidedness(Sidedness::Both);
     for (Precision prec : {Precision::Double, Precision::Float}) {
-        p->setPrecision(prec);
-        const auto hit = p->intersect(ray, 0, kInf);
+        const IntersectOptions opt = withPrecision(prec);
+        const auto hit = intersect1(*p, ray, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == doctest::Approx(9.75).epsilon(prec == Precision::Double ? 1e-15 : 1e-6));
-        const SurfaceGeometry g = p->surfaceAt(ray, *hit);
+        const SurfaceGeometry g = surface1(*p, ray, *hit, opt);
         // Gradient (2x, 2y, -1) = (0.6, 0.8, -1): outward points down and out of the bowl.
         const Vec3 n = normalize(Vec3{0.6, 0.8, -1});
         CHECK(g.ng.x == doctest::Approx(n.x).epsilon(1e-6));
@@ -54,10 +55,10 @@ TEST_CASE("quadric: paraboloid z = x² + y² hit along its axis (a = 0)") {
     // Negated coefficients turn it inside out: the same ray is a front-face hit.
     auto inv =
         makeQuadric(clipped(coefficients(-1, -1, 0, 0, 0, 0, 0, 0, 1, 0), {-2, -2, -1}, {2, 2, 4}));
-    const auto hit = inv->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*inv, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == doctest::Approx(9.75).epsilon(1e-15));
-    CHECK(inv->surfaceAt(ray, *hit).frontFace);
+    CHECK(surface1(*inv, ray, *hit).frontFace);
 }
 
 TEST_CASE("quadric: sphere as a quadric equals makeSphere") {
@@ -77,13 +78,13 @@ TEST_CASE("quadric: sphere as a quadric equals makeSphere") {
         for (Sidedness side : {Sidedness::Outside, Sidedness::Inside, Sidedness::Both}) {
             q->setSidedness(side);
             s->setSidedness(side);
-            const auto hq = q->intersect(ray, 0, kInf);
-            const auto hs = s->intersect(ray, 0, kInf);
+            const auto hq = intersect1(*q, ray, 0, kInf);
+            const auto hs = intersect1(*s, ray, 0, kInf);
             REQUIRE(hq.has_value() == hs.has_value());
             if (!hq) continue;
             ++hits;
             CHECK(hq->t == doctest::Approx(hs->t).epsilon(1e-9));
-            const SurfaceGeometry gq = q->surfaceAt(ray, *hq), gs = s->surfaceAt(ray, *hs);
+            const SurfaceGeometry gq = surface1(*q, ray, *hq), gs = surface1(*s, ray, *hs);
             CHECK(gq.frontFace == gs.frontFace);
             CHECK(dot(gq.ng, gs.ng) > 1 - 1e-9);
         }
@@ -97,11 +98,11 @@ TEST_CASE("quadric: ellipsoid hits, derived bounds, clip ∩ derived") {
     const QuadricParams e = coefficients(0.25, 1, 1.0 / 9, 0, 0, 0, 0, 0, 0, -1);
     auto q = makeQuadric(e);
     const Ray rx{{-5, 0, 0}, {1, 0, 0}};
-    const auto hx = q->intersect(rx, 0, kInf);
+    const auto hx = intersect1(*q, rx, 0, kInf);
     REQUIRE(hx);
     CHECK(hx->t == doctest::Approx(3.0).epsilon(1e-15));
-    CHECK(q->surfaceAt(rx, *hx).ng == Vec3{-1, 0, 0});
-    CHECK(q->intersect(Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInf)->t == doctest::Approx(2.0));
+    CHECK(surface1(*q, rx, *hx).ng == Vec3{-1, 0, 0});
+    CHECK(intersect1(*q, Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInf)->t == doctest::Approx(2.0));
     const Bounds3 b = q->bounds();
     CHECK(b.hi.x == doctest::Approx(2.0).epsilon(1e-6));
     CHECK(b.hi.x >= 2.0);
@@ -112,9 +113,9 @@ TEST_CASE("quadric: ellipsoid hits, derived bounds, clip ∩ derived") {
     auto c = makeQuadric(clipped(e, {-1, -5, -5}, {5, 5, 5}));
     CHECK(c->bounds().lo.x == doctest::Approx(-1.0).epsilon(1e-6));
     CHECK(c->bounds().hi.x == doctest::Approx(2.0).epsilon(1e-6));
-    CHECK_FALSE(c->intersect(rx, 0, kInf));
+    CHECK_FALSE(intersect1(*c, rx, 0, kInf));
     c->setSidedness(Sidedness::Both);
-    CHECK(c->intersect(rx, 0, kInf)->t == doctest::Approx(7.0).epsilon(1e-15));
+    CHECK(intersect1(*c, rx, 0, kInf)->t == doctest::Approx(7.0).epsilon(1e-15));
 }
 
 TEST_CASE("quadric: rotated ellipsoid box is tight (cross terms)") {
@@ -127,7 +128,7 @@ TEST_CASE("quadric: rotated ellipsoid box is tight (cross terms)") {
     Bounds3 samples;
     for (int i = 0; i < 20000; ++i) {
         const Ray ray{{0, 0, 0}, rng.direction()};
-        const auto hit = q->intersect(ray, 0, kInf);
+        const auto hit = intersect1(*q, ray, 0, kInf);
         REQUIRE(hit);
         samples.expand(ray.at(hit->t));
     }
@@ -143,18 +144,18 @@ TEST_CASE("quadric: hyperboloid of one sheet") {
     auto q =
         makeQuadric(clipped(coefficients(1, 1, -1, 0, 0, 0, 0, 0, 0, -1), {-2, -2, -2}, {2, 2, 2}));
     const Ray r0{{-5, 0, 0}, {1, 0, 0}};
-    const auto h0 = q->intersect(r0, 0, kInf);
+    const auto h0 = intersect1(*q, r0, 0, kInf);
     REQUIRE(h0);
     CHECK(h0->t == doctest::Approx(4.0).epsilon(1e-15));
-    CHECK(q->surfaceAt(r0, *h0).ng == Vec3{-1, 0, 0});
-    const auto h1 = q->intersect(Ray{{-5, 0, 1.5}, {1, 0, 0}}, 0, kInf);
+    CHECK(surface1(*q, r0, *h0).ng == Vec3{-1, 0, 0});
+    const auto h1 = intersect1(*q, Ray{{-5, 0, 1.5}, {1, 0, 0}}, 0, kInf);
     REQUIRE(h1);
     CHECK(h1->t == doctest::Approx(5 - std::sqrt(3.25)).epsilon(1e-15));
     // At z = 1.9 both roots (x = ±2.147) lie outside the box: miss.
     q->setSidedness(Sidedness::Both);
-    CHECK_FALSE(q->intersect(Ray{{-5, 0, 1.9}, {1, 0, 0}}, 0, kInf));
+    CHECK_FALSE(intersect1(*q, Ray{{-5, 0, 1.9}, {1, 0, 0}}, 0, kInf));
     q->setSidedness(Sidedness::Inside);
-    CHECK(q->intersect(r0, 0, kInf)->t == doctest::Approx(6.0).epsilon(1e-15));
+    CHECK(intersect1(*q, r0, 0, kInf)->t == doctest::Approx(6.0).epsilon(1e-15));
 }
 
 TEST_CASE("quadric: hyperboloid of two sheets, near root clipped, far root kept") {
@@ -163,16 +164,16 @@ TEST_CASE("quadric: hyperboloid of two sheets, near root clipped, far root kept"
     auto q =
         makeQuadric(clipped(coefficients(-1, -1, 1, 0, 0, 0, 0, 0, 0, -1), {-3, -3, 0}, {3, 3, 3}));
     q->setSidedness(Sidedness::Both);
-    const auto hit = q->intersect(Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInf);
+    const auto hit = intersect1(*q, Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == doctest::Approx(6.0).epsilon(1e-15));
     // From above: z = 1 first (t = 4), front facing (gradient (0,0,2z) against d).
     q->setSidedness(Sidedness::Outside);
     const Ray down{{0, 0, 5}, {0, 0, -1}};
-    const auto top = q->intersect(down, 0, kInf);
+    const auto top = intersect1(*q, down, 0, kInf);
     REQUIRE(top);
     CHECK(top->t == doctest::Approx(4.0).epsilon(1e-15));
-    CHECK(q->surfaceAt(down, *top).frontFace);
+    CHECK(surface1(*q, down, *top).frontFace);
 }
 
 TEST_CASE("quadric: degenerate linear quadric (a plane) and the cone's apex") {
@@ -181,22 +182,22 @@ TEST_CASE("quadric: degenerate linear quadric (a plane) and the cone's apex") {
     auto plane =
         makeQuadric(clipped(coefficients(0, 0, 0, 0, 0, 0, 0, 0, 1, -2), {-1, -1, 1}, {1, 1, 3}));
     const Ray ray{{0.5, 0.5, 5}, {0, 0, -1}};
-    const auto hit = plane->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*plane, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 3.0);
-    CHECK(plane->surfaceAt(ray, *hit).ng == Vec3{0, 0, 1});
+    CHECK(surface1(*plane, ray, *hit).ng == Vec3{0, 0, 1});
     plane->setSidedness(Sidedness::Both);
-    CHECK_FALSE(plane->intersect(Ray{{0, 0, 2}, {1, 0, 0}}, -kInf, kInf));
+    CHECK_FALSE(intersect1(*plane, Ray{{0, 0, 2}, {1, 0, 0}}, -kInf, kInf));
     // Cone x² + y² - z² = 0: every line through the apex is a double root there; the
     // gradient vanishes and the normal falls back to facing the ray (finite, unit).
     auto cone =
         makeQuadric(clipped(coefficients(1, 1, -1, 0, 0, 0, 0, 0, 0, 0), {-1, -1, -1}, {1, 1, 1}));
     cone->setSidedness(Sidedness::Both);
     const Ray apex{{0, 0, 3}, {0, 0, -1}};
-    const auto ha = cone->intersect(apex, 0, kInf);
+    const auto ha = intersect1(*cone, apex, 0, kInf);
     REQUIRE(ha);
     CHECK(ha->t == 3.0);
-    const SurfaceGeometry g = cone->surfaceAt(apex, *ha);
+    const SurfaceGeometry g = surface1(*cone, apex, *ha);
     CHECK(g.ng == Vec3{0, 0, 1});
 }
 

@@ -13,6 +13,7 @@
 #include "geometry/quadratic.h"
 #include "geometry/spawn.h"
 #include "geometry/sphere.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -50,10 +51,10 @@ TEST_CASE("sphere: axis ray hits the near pole first, front face, outward normal
     // Unit sphere at the origin, ray from z = -5 along +z: |o + t d| = 1 at t = 4 and 6.
     auto s = makeSphere({0, 0, 0}, 1);
     const Ray ray{{0, 0, -5}, {0, 0, 1}};
-    const auto hit = s->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*s, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 4.0);
-    const SurfaceGeometry g = s->surfaceAt(ray, *hit);
+    const SurfaceGeometry g = surface1(*s, ray, *hit);
     CHECK(g.p == Vec3{0, 0, -1});
     CHECK(g.ng == Vec3{0, 0, -1});
     CHECK(g.ns == Vec3{0, 0, -1});
@@ -66,7 +67,7 @@ TEST_CASE("sphere: axis ray hits the near pole first, front face, outward normal
 TEST_CASE("sphere: t is measured in units of |d| (direction not normalised)") {
     // Same geometry with |d| = 2: the hit at distance 4 is t = 2.
     auto s = makeSphere({0, 0, 0}, 1);
-    const auto hit = s->intersect(Ray{{0, 0, -5}, {0, 0, 2}}, 0, kInf);
+    const auto hit = intersect1(*s, Ray{{0, 0, -5}, {0, 0, 2}}, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 2.0);
 }
@@ -76,10 +77,10 @@ TEST_CASE("sphere: off-axis hit point and normal") {
     // entry point has local z = -sqrt(1 - 0.36) = -0.8: p = (1.6, 2, 2.2), t = 4.2.
     auto s = makeSphere({1, 2, 3}, 1);
     const Ray ray{{1.6, 2, -2}, {0, 0, 1}};
-    const auto hit = s->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*s, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == doctest::Approx(4.2).epsilon(1e-15));
-    const SurfaceGeometry g = s->surfaceAt(ray, *hit);
+    const SurfaceGeometry g = surface1(*s, ray, *hit);
     CHECK(g.ng.x == doctest::Approx(0.6).epsilon(1e-14));
     CHECK(g.ng.y == doctest::Approx(0.0));
     CHECK(g.ng.z == doctest::Approx(-0.8).epsilon(1e-14));
@@ -87,7 +88,7 @@ TEST_CASE("sphere: off-axis hit point and normal") {
     CHECK(hit->u == doctest::Approx(0.6).epsilon(1e-14));  // x, y of the unit normal
     CHECK(hit->v == doctest::Approx(0.0));
     // Ray passing 1.01 from the centre misses.
-    CHECK_FALSE(s->intersect(Ray{{2.01, 2, -2}, {0, 0, 1}}, 0, kInf));
+    CHECK_FALSE(intersect1(*s, Ray{{2.01, 2, -2}, {0, 0, 1}}, 0, kInf));
 }
 
 TEST_CASE("sphere: sidedness filters near (entering) and far (leaving) roots") {
@@ -95,40 +96,40 @@ TEST_CASE("sphere: sidedness filters near (entering) and far (leaving) roots") {
     auto s = makeSphere({0, 0, 0}, 1);
     const Ray outsideRay{{0, 0, -5}, {0, 0, 1}};
     s->setSidedness(Sidedness::Inside);
-    auto hit = s->intersect(outsideRay, 0, kInf);
+    auto hit = intersect1(*s, outsideRay, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 6.0);
-    CHECK_FALSE(s->surfaceAt(outsideRay, *hit).frontFace);
+    CHECK_FALSE(surface1(*s, outsideRay, *hit).frontFace);
 
     // Origin at the centre: the only positive root (t = 1) leaves the sphere.
     const Ray insideRay{{0, 0, 0}, {1, 0, 0}};
     s->setSidedness(Sidedness::Outside);
-    CHECK_FALSE(s->intersect(insideRay, 0, kInf));
-    CHECK_FALSE(s->occluded(insideRay, 0, kInf));
+    CHECK_FALSE(intersect1(*s, insideRay, 0, kInf));
+    CHECK_FALSE(occluded1(*s, insideRay, 0, kInf));
     s->setSidedness(Sidedness::Both);
-    hit = s->intersect(insideRay, 0, kInf);
+    hit = intersect1(*s, insideRay, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 1.0);
-    const SurfaceGeometry g = s->surfaceAt(insideRay, *hit);
+    const SurfaceGeometry g = surface1(*s, insideRay, *hit);
     CHECK_FALSE(g.frontFace);
     CHECK(g.ng == Vec3{1, 0, 0});  // still outward
     s->setSidedness(Sidedness::Inside);
-    CHECK(s->intersect(insideRay, 0, kInf));
+    CHECK(intersect1(*s, insideRay, 0, kInf));
 }
 
 TEST_CASE("sphere: strict interval tMin < t < tMax, NaN-safe") {
     auto s = makeSphere({0, 0, 0}, 1);
     s->setSidedness(Sidedness::Both);
     const Ray ray{{0, 0, -5}, {0, 0, 1}};  // roots 4 and 6
-    CHECK_FALSE(s->intersect(ray, 0, 4.0));
-    CHECK(s->intersect(ray, 0, std::nextafter(4.0, 5.0))->t == 4.0);
-    CHECK(s->intersect(ray, 4.0, kInf)->t == 6.0);  // t = tMin excluded: next root
-    CHECK_FALSE(s->intersect(ray, 6.0, kInf));
+    CHECK_FALSE(intersect1(*s, ray, 0, 4.0));
+    CHECK(intersect1(*s, ray, 0, std::nextafter(4.0, 5.0))->t == 4.0);
+    CHECK(intersect1(*s, ray, 4.0, kInf)->t == 6.0);  // t = tMin excluded: next root
+    CHECK_FALSE(intersect1(*s, ray, 6.0, kInf));
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    CHECK_FALSE(s->intersect(ray, nan, kInf));
-    CHECK_FALSE(s->intersect(ray, 0, nan));
-    CHECK_FALSE(s->intersect(Ray{{0, 0, -5}, {0, 0, nan}}, 0, kInf));
-    CHECK_FALSE(s->intersect(Ray{{0, 0, -5}, {0, 0, 0}}, 0, kInf));
+    CHECK_FALSE(intersect1(*s, ray, nan, kInf));
+    CHECK_FALSE(intersect1(*s, ray, 0, nan));
+    CHECK_FALSE(intersect1(*s, Ray{{0, 0, -5}, {0, 0, nan}}, 0, kInf));
+    CHECK_FALSE(intersect1(*s, Ray{{0, 0, -5}, {0, 0, 0}}, 0, kInf));
 }
 
 TEST_CASE("sphere: tangent ray is a grazing (not front-facing) double root") {
@@ -136,9 +137,9 @@ TEST_CASE("sphere: tangent ray is a grazing (not front-facing) double root") {
     // dot(d, n) = 0 there, so it is not a front-face hit: Outside misses, Both hits.
     auto s = makeSphere({0, 0, 0}, 1);
     const Ray ray{{1, 0, -5}, {0, 0, 1}};
-    CHECK_FALSE(s->intersect(ray, 0, kInf));
+    CHECK_FALSE(intersect1(*s, ray, 0, kInf));
     s->setSidedness(Sidedness::Both);
-    const auto hit = s->intersect(ray, 0, kInf);
+    const auto hit = intersect1(*s, ray, 0, kInf);
     REQUIRE(hit);
     CHECK(hit->t == 5.0);
 }
@@ -161,12 +162,12 @@ TEST_CASE("sphere: spawned rays do not re-hit their own surface") {
             if (dot(dir, n) < 0) dir = -dir;
             // Leaving outward.
             const SpawnedRay out = spawnRay(p, n, 0.0, dir, spawn);
-            if (s->intersect(out.ray, out.tMin, kInf)) ++rehits;
+            if (intersect1(*s, out.ray, out.tMin, kInf)) ++rehits;
             // Entering: the far side, about 2 r cos(theta) away (|d| = 1); exactly the far
             // root of the spawned ray (whose origin is offset inward by robustOffset()).
             const Vec3 in = -dir;
             const SpawnedRay inRay = spawnRay(p, n, 0.0, in, spawn);
-            const auto hit = s->intersect(inRay.ray, inRay.tMin, kInf);
+            const auto hit = intersect1(*s, inRay.ray, inRay.tMin, kInf);
             const RefRoots ref = referenceRoots(inRay.ray.o, in, centre, r);
             if (!hit || !ref.hit || std::abs(hit->t - double(ref.t1)) > 1e-12 * r ||
                 !(hit->t > r * dot(dir, n))) {  // past the chord's midpoint: the far side
@@ -194,7 +195,7 @@ TEST_CASE("sphere: huge sphere seen from 1 unit above, double, within a few ulps
             if (dot(d, n) > -0.2) d = d - n * (dot(d, n) + 0.5);  // point it downwards
             d = d * rng.uniform(0.5, 2.0);
             const RefRoots ref = referenceRoots(o, d, centre, r);
-            const auto hit = s->intersect(Ray{o, d}, 0, kInf);
+            const auto hit = intersect1(*s, Ray{o, d}, 0, kInf);
             REQUIRE(ref.hit);
             REQUIRE(hit);
             CHECK(hit->t > 0);
@@ -220,7 +221,7 @@ TEST_CASE("sphere: tiny sphere far away, double, within a few ulps") {
         const double offset = std::array<double, 4>{0.0, 0.5, 0.9, 1.01}[i % 4];
         const Vec3 target = centre + test::perpendicular(toEye) * (offset * r);
         const Vec3 d = target - o;  // |d| ≈ 1e4: t ≈ 1
-        const auto hit = s->intersect(Ray{o, d}, 0, kInf);
+        const auto hit = intersect1(*s, Ray{o, d}, 0, kInf);
         const RefRoots ref = referenceRoots(o, d, centre, r);
         if (hit.has_value() != ref.hit || hit.has_value() != (offset < 1)) ++wrong;
         if (hit && ref.hit) worst = std::max(worst, test::ulpDistance(hit->t, double(ref.t0)));
@@ -239,7 +240,7 @@ TEST_CASE("sphere: float precision keeps hit/miss right up to D/r = 1e5") {
     test::Rng rng(17);
     for (double D : {1e2, 1e3, 1e4, 1e5}) {
         auto s = makeSphere({0, 0, 0}, 1);
-        s->setPrecision(Precision::Float);
+        const IntersectOptions opt = withPrecision(Precision::Float);
         int wrong = 0, n = 0;
         double worstDt = 0, worstUlps = 0;
         for (int i = 0; i < 3000; ++i) {
@@ -248,7 +249,7 @@ TEST_CASE("sphere: float precision keeps hit/miss right up to D/r = 1e5") {
             const double offset = std::array<double, 3>{0.5, 0.99, 1.01}[i % 3];
             const Vec3 d(Vec3f(normalize(test::perpendicular(toEye) * offset - o)));
             const RefRoots ref = referenceRoots(o, d, {0, 0, 0}, 1);
-            const auto hit = s->intersect(Ray{o, d}, 0, kInf);
+            const auto hit = intersect1(*s, Ray{o, d}, 0, kInf, opt);
             ++n;
             if (hit.has_value() != ref.hit || ref.hit != (offset < 1)) ++wrong;
             if (hit && ref.hit && offset == 0.5) {
@@ -270,8 +271,8 @@ TEST_CASE("sphere: huge sphere near the origin in float, stable root") {
     // the doubled-precision c: never a negative t, error well below the NUMERICS limit.
     for (double r : {1e3, 1e4}) {
         auto s = makeSphere({0, 0, 0}, r);
-        s->setPrecision(Precision::Float);
-        const auto hit = s->intersect(Ray{{0, 0, r + 1}, {0, 0, -1}}, 0, kInf);
+        const IntersectOptions opt = withPrecision(Precision::Float);
+        const auto hit = intersect1(*s, Ray{{0, 0, r + 1}, {0, 0, -1}}, 0, kInf, opt);
         REQUIRE(hit);
         CHECK(hit->t == doctest::Approx(1.0).epsilon(1e-4));
     }

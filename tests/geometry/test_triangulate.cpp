@@ -10,6 +10,7 @@
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -36,7 +37,7 @@ void checkTriangulation(const std::vector<Vec3>& v, size_t expectedTriangles) {
         CHECK(dot(tn, unit) > 0);
         sum += length(tn) / 2;
         const Vec3 c = (v[t[0]] + v[t[1]] + v[t[2]]) / 3.0;
-        CHECK(poly->intersect(Ray{c + unit, -unit}, 0, 10).has_value());
+        CHECK(intersect1(*poly, Ray{c + unit, -unit}, 0, 10).has_value());
     }
     CHECK(sum == doctest::Approx(polygonArea).epsilon(1e-12));
 }

@@ -4,7 +4,9 @@
 #include <functional>
 #include <string>
 
+#include "geometry/triangle_mesh.h"
 #include "renderer/io/errors.h"
+#include "renderer/scene.h"
 #include "support/temp_dir.h"
 
 namespace raylab::test {
@@ -28,6 +30,11 @@ inline Failure failureOf(const std::function<void()>& fn) {
 
 inline bool contains(const std::string& haystack, const std::string& needle) {
     return haystack.find(needle) != std::string::npos;
+}
+
+/// The triangle mesh behind a loaded object, or null for an analytic shape.
+inline const TriangleMesh* meshOf(const Object& o) {
+    return o.shape ? o.shape->nativeTriangles() : nullptr;
 }
 
 }  // namespace raylab::test

@@ -35,7 +35,7 @@ test::Failure loadFailure(const std::string& text) {
 
 /// Distance along the ray to the first accepted hit, or -1 for a miss.
 double hitT(const Shape& s, const Vec3& o, const Vec3& d) {
-    const auto h = s.intersect(Ray{o, d}, 1e-9, 1e30);
+    const auto h = s.intersect(0, Ray{o, d}, 1e-9, 1e30, {});
     return h ? h->t : -1;
 }
 
@@ -163,7 +163,7 @@ TEST_CASE("json scene: sphere, plane and disk") {
     CHECK(hitT(disk, {1.5, 0, 0}, {0, 0, -1}) == doctest::Approx(4));
     CHECK(hitT(disk, {2.5, 0, 0}, {0, 0, -1}) == -1);
     for (const Object& o : s.objects) {
-        CHECK(!o.isMesh());
+        CHECK(test::meshOf(o) == nullptr);
         CHECK(o.shape->sidedness() == Sidedness::Outside);
     }
     // No material given: one shared grey "default" material is added.
@@ -242,19 +242,18 @@ TEST_CASE("json scene: polygon fill rule, inside test and triangulation") {
 
     // Triangulated: a mesh of n - 2 = 2 triangles over the same vertices.
     const Object& quad = s.objects[2];
-    REQUIRE(quad.isMesh());
-    CHECK(quad.shape == nullptr);
-    CHECK(quad.mesh->positions.size() == 4);
-    CHECK(quad.mesh->triangleCount() == 2);
-    CHECK(!quad.mesh->hasNormals());
+    REQUIRE(test::meshOf(quad) != nullptr);
+    CHECK(test::meshOf(quad)->positions.size() == 4);
+    CHECK(test::meshOf(quad)->triangleCount() == 2);
+    CHECK(!test::meshOf(quad)->hasNormals());
     for (size_t t = 0; t < 2; ++t) {
-        const auto& tri = quad.mesh->triangles[t];
-        const auto& P = quad.mesh->positions;
+        const auto& tri = test::meshOf(quad)->triangles[t];
+        const auto& P = test::meshOf(quad)->positions;
         // Wound like the polygon: counter-clockwise seen from +z.
         CHECK(cross(P[tri[1]] - P[tri[0]], P[tri[2]] - P[tri[0]]).z > 0);
     }
-    REQUIRE(s.objects[3].mesh->hasNormals());
-    checkVec(s.objects[3].mesh->normals[2], {0, 0, 1});  // normalised
+    REQUIRE(test::meshOf(s.objects[3])->hasNormals());
+    checkVec(test::meshOf(s.objects[3])->normals[2], {0, 0, 1});  // normalised
 }
 
 TEST_CASE("json scene: checkerboard mesh") {
@@ -264,21 +263,21 @@ TEST_CASE("json scene: checkerboard mesh") {
                                    R"("materials": {"a": {"kd": 1}, "b": {"kd": 0}})"));
     REQUIRE(s.objects.size() == 1);
     const Object& o = s.objects[0];
-    REQUIRE(o.isMesh());
+    REQUIRE(test::meshOf(o) != nullptr);
     // (2 + 1) x (3 + 1) grid vertices, 2 x 3 squares of 2 triangles.
-    CHECK(o.mesh->positions.size() == 12);
-    REQUIRE(o.mesh->triangleCount() == 12);
+    CHECK(test::meshOf(o)->positions.size() == 12);
+    REQUIRE(test::meshOf(o)->triangleCount() == 12);
     REQUIRE(o.faceMaterials.size() == 12);
     // Square (i, j) uses "a" when i + j is even; triangles run i fastest.
     const uint32_t a = 0, b = 1;
     const uint32_t expected[12] = {a, a, b, b, b, b, a, a, a, a, b, b};
     for (size_t t = 0; t < 12; ++t) CHECK(o.faceMaterials[t] == expected[t]);
     // Every triangle faces edge_u × edge_v = (1, 0, 0) × (0, 0, -1) = (0, 1, 0).
-    for (const auto& tri : o.mesh->triangles) {
-        const auto& P = o.mesh->positions;
+    for (const auto& tri : test::meshOf(o)->triangles) {
+        const auto& P = test::meshOf(o)->positions;
         checkVec(normalize(cross(P[tri[1]] - P[tri[0]], P[tri[2]] - P[tri[0]])), {0, 1, 0});
     }
-    const Bounds3 box = o.mesh->bounds();
+    const Bounds3 box = test::meshOf(o)->bounds();
     checkVec(box.lo, {0, 0, -3});
     checkVec(box.hi, {2, 0, 0});
 }
@@ -329,8 +328,8 @@ TEST_CASE("json scene: meshes are two-sided unless \"sides\" says otherwise") {
                                    Sidedness::Inside, Sidedness::Both, Sidedness::Outside};
     for (size_t i = 0; i < 6; ++i) {
         CAPTURE(i);
-        REQUIRE(bool(s.objects[i].mesh));
-        CHECK(s.objects[i].meshSides == expected[i]);
+        REQUIRE((test::meshOf(s.objects[i]) != nullptr));
+        CHECK(s.objects[i].shape->sidedness() == expected[i]);
     }
 }
 
@@ -353,33 +352,33 @@ TEST_CASE("json scene: OBJ mesh with transforms, relative to the scene file") {
     // Scale 2, then 90° about +z ((x, y) -> (-y, x)), then +10 x:
     // (1,0,0) -> (2,0,0) -> (0,2,0) -> (10,2,0); (0,1,0) -> (0,2,0) -> (-2,0,0) -> (8,0,0).
     const Object& a = s.objects[0];
-    REQUIRE(a.isMesh());
+    REQUIRE(test::meshOf(a) != nullptr);
     CHECK(a.name == "meshes/tri.obj");
     CHECK(a.material == 0);  // the override
     CHECK(a.faceMaterials.empty());
-    REQUIRE(a.mesh->positions.size() == 3);
-    checkVec(a.mesh->positions[0], {10, 0, 0});
-    checkVec(a.mesh->positions[1], {10, 2, 0});
-    checkVec(a.mesh->positions[2], {8, 0, 0});
-    REQUIRE(a.mesh->hasNormals());
-    checkVec(a.mesh->normals[0], {0, 0, 1});
+    REQUIRE(test::meshOf(a)->positions.size() == 3);
+    checkVec(test::meshOf(a)->positions[0], {10, 0, 0});
+    checkVec(test::meshOf(a)->positions[1], {10, 2, 0});
+    checkVec(test::meshOf(a)->positions[2], {8, 0, 0});
+    REQUIRE(test::meshOf(a)->hasNormals());
+    checkVec(test::meshOf(a)->normals[0], {0, 0, 1});
 
     // Rotations apply in list order: (1,0,0) -> z: (0,1,0) -> x: (0,0,1).
     const Object& b = s.objects[1];
     CHECK(b.name == "turned");
-    checkVec(b.mesh->positions[1], {0, 0, 1});
+    checkVec(test::meshOf(b)->positions[1], {0, 0, 1});
     // The normal (0,0,1) -> z: (0,0,1) -> x: (0,-1,0).
-    checkVec(b.mesh->normals[0], {0, -1, 0});
+    checkVec(test::meshOf(b)->normals[0], {0, -1, 0});
     // No override: the OBJ has no MTL, so its faces use a grey default added to the scene.
     CHECK(s.materials[b.material].kd == Color(0.8, 0.8, 0.8));
 
     // A mirror keeps the front side: the winding is swapped so the geometric
     // normal still agrees with the vertex normal (0, 0, 1).
     const Object& c = s.objects[2];
-    const auto& P = c.mesh->positions;
-    const auto& tri = c.mesh->triangles[0];
+    const auto& P = test::meshOf(c)->positions;
+    const auto& tri = test::meshOf(c)->triangles[0];
     CHECK(cross(P[tri[1]] - P[tri[0]], P[tri[2]] - P[tri[0]]).z > 0);
-    checkVec(c.mesh->normals[0], {0, 0, 1});
+    checkVec(test::meshOf(c)->normals[0], {0, 0, 1});
 }
 
 TEST_CASE("json scene: errors name file, line and key path") {

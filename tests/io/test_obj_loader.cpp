@@ -348,7 +348,7 @@ TEST_CASE("obj scene: camera framed on the bounds, key light and ambient") {
     const Scene s = loadObjScene(dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
     CHECK(s.sourcePath == dir.file("tri.obj"));
     REQUIRE(s.objects.size() == 1);
-    CHECK(s.objects[0].isMesh());
+    CHECK(test::meshOf(s.objects[0]) != nullptr);
     CHECK(s.camera.projection() == Camera::Projection::Perspective);
     const Vec3 centre(0.5, 0.5, 0);
     // The camera looks at the centre from direction (1, 0.6, 1.5).

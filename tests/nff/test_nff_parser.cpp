@@ -7,8 +7,10 @@
 #include <functional>
 #include <string>
 
+#include "geometry/triangle_mesh.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 
@@ -164,7 +166,7 @@ TEST_CASE("nff: cone end points on two lines (format document) or one line (SPD)
     // (a capped cone would be hit at y = 0), stays inside the lateral surface
     // and leaves through the open top (radius 0.5 at y = 2): no hit at all.
     const Ray axis{{0, -5, 0}, {0, 1, 0}};
-    CHECK_FALSE(one.objects[0].shape->intersect(axis, 0, 100).has_value());
+    CHECK_FALSE(intersect1(*one.objects[0].shape, axis, 0, 100).has_value());
 }
 
 TEST_CASE("nff: polygons: triangles to a mesh, larger polygons analytic, pp smooth") {
@@ -184,14 +186,14 @@ TEST_CASE("nff: polygons: triangles to a mesh, larger polygons analytic, pp smoo
     const Object* smooth = findObject(s, "patches");
     REQUIRE(flat);
     REQUIRE(smooth);
-    CHECK(flat->mesh->triangleCount() == 2);
-    CHECK_FALSE(flat->mesh->hasNormals());
+    CHECK(flat->shape->nativeTriangles()->triangleCount() == 2);
+    CHECK_FALSE(flat->shape->nativeTriangles()->hasNormals());
     // Two materials in one mesh: a per-face table.
     REQUIRE(flat->faceMaterials.size() == 2);
     CHECK(flat->materialOf(0) == 0);
     CHECK(flat->materialOf(1) == 1);
-    CHECK(smooth->mesh->triangleCount() == 1);
-    REQUIRE(smooth->mesh->hasNormals());
+    CHECK(smooth->shape->nativeTriangles()->triangleCount() == 1);
+    REQUIRE(smooth->shape->nativeTriangles()->hasNormals());
     CHECK(findObject(s, "polygon@15"));
     CHECK(std::string(findObject(s, "polygon@15")->shape->kind()) == "polygon");
     CHECK(findObject(s, "patch@24"));

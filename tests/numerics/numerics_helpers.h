@@ -17,6 +17,7 @@
 #include "accel/accel_test_helpers.h"
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
+#include "shape_queries.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/render.h"
@@ -47,12 +48,15 @@ inline std::vector<Backend> allBackends() {
         {"embree", "embree", false}, {"embree robust", "embree", true}, {"naive", "naive", false}};
 }
 
-/// Builds `b` over `scene` with geometry relative to `origin` (the eye).
+/// Builds `b` over `scene` with geometry relative to `origin` (the eye) and
+/// the analytic intersectors in `precision`.
 inline std::unique_ptr<Accelerator> build(const Backend& b, const Scene& scene,
-                                          const Vec3& origin = {0, 0, 0}) {
+                                          const Vec3& origin = {0, 0, 0},
+                                          Precision precision = Precision::Double) {
     AccelOptions o;
     o.robust = b.robust;
     o.origin = origin;
+    o.intersect.precision = precision;
     return makeAccelerator(b.name, scene, o);
 }
 
@@ -119,6 +123,7 @@ public:
         return q.occluded;
     }
     std::string name() const override { return m_inner.name(); }
+    double buildSeconds() const override { return m_inner.buildSeconds(); }
     const std::vector<Query>& queries() const { return m_queries; }
 
 private:
@@ -131,11 +136,8 @@ private:
 /// builds it: geometry relative to the eye).
 inline RenderResult renderWith(Scene& scene, RenderOverrides overrides) {
     const RenderOptions options = resolveRenderOptions(scene, overrides);
-    applyPrecision(scene, options.precision);
     const auto accel = makeAccelerator(options.accel, scene, options.accelOptions);
-    RenderResult r = render(scene, *accel, options, analyseEffects(scene, options));
-    applyPrecision(scene, Precision::Double);
-    return r;
+    return render(scene, *accel, options, analyseEffects(scene, options));
 }
 
 /// NaN/Inf values among the RGBA floats of a film.

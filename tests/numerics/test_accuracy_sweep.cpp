@@ -199,9 +199,6 @@ TEST_CASE("accuracy: a tiny sweep end to end") {
     CHECK(d1.rays <= 2 * 108);
     CHECK(d1.rays < def.rays);
     CHECK(d1.knobRmse > 0);  // no mirror reflection at depth 1
-    // The scene is left in double precision.
-    for (const Object& obj : scene.objects) CHECK(obj.shape->precision() == Precision::Double);
-
     // Outputs: CSV (header + reference + 4 rows), valid JSON, a plot.
     const std::string csv = accuracyCsv(rep);
     CHECK(cli::lineCount(csv) == 6);

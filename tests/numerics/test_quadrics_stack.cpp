@@ -12,15 +12,15 @@
 #include <cmath>
 
 #include "numerics/numerics_helpers.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 using namespace raylab::numerics_test;
 
 namespace {
 
-Scene single(std::unique_ptr<Shape> shape, Precision precision) {
+Scene single(std::unique_ptr<Shape> shape) {
     shape->setSidedness(Sidedness::Both);
-    shape->setPrecision(precision);
     Scene s;
     s.materials.resize(1);
     const std::string kind = shape->kind();
@@ -58,9 +58,9 @@ TEST_CASE("quadrics stack: ray along a cylinder's axis hits only the caps, no Na
         for (Precision precision : {Precision::Double, Precision::Float}) {
             for (bool capped : {false, true}) {
                 const Scene scene =
-                    single(cone(offset, 1, offset + Vec3{0, 0, 2}, 1, capped), precision);
+                    single(cone(offset, 1, offset + Vec3{0, 0, 2}, 1, capped));
                 for (const Backend& b : allBackends()) {
-                    const auto accel = build(b, scene, offset + Vec3{0, 0, -1});
+                    const auto accel = build(b, scene, offset + Vec3{0, 0, -1}, precision);
                     for (bool daz : {false, true}) {
                         const FlushDenormals mode(daz);
                         for (const Vec3 d : {Vec3{0, 0, 1}, Vec3{1e-20, 1e-20, 1}}) {
@@ -77,7 +77,7 @@ TEST_CASE("quadrics stack: ray along a cylinder's axis hits only the caps, no Na
                                 CHECK(accel->occluded(ray, 0, kInf) == capped);
                                 if (!hit) continue;
                                 CHECK(std::abs(hit->t - 1.0) <= tolerance(precision, offset));
-                                const SurfaceInteraction si = scene.surfaceAt(ray, *hit);
+                                const SurfaceInteraction si = scene.surfaceAt(ray, *hit, withPrecision(precision));
                                 CHECK(isFinite(si.ng));
                                 CHECK(std::abs(si.ng.z) == doctest::Approx(1.0));
                                 CHECK(si.frontFace == (z0 < 0));
@@ -104,13 +104,13 @@ TEST_CASE("quadrics stack: ray parallel to a cone's side (a = 0) has its one rea
     for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{1e5, -1e5, 1e5}}) {
         for (Precision precision : {Precision::Double, Precision::Float}) {
             const Scene scene =
-                single(cone(offset, 1, offset + Vec3{0, 0, 1}, 0, false), precision);
+                single(cone(offset, 1, offset + Vec3{0, 0, 1}, 0, false));
             const Vec3 d{-1, 0, 1};
             for (const Backend& b : allBackends()) {
                 CAPTURE(b.label);
                 CAPTURE(std::string(precisionName(precision)));
                 CAPTURE(offset.x);
-                const auto accel = build(b, scene, offset + Vec3{1.2, 0, -1});
+                const auto accel = build(b, scene, offset + Vec3{1.2, 0, -1}, precision);
                 const double tol = tolerance(precision, offset);
 
                 const Ray side{offset + Vec3{1.2, 0, -1}, d};
@@ -156,13 +156,13 @@ TEST_CASE("quadrics stack: paraboloid hit along its axis (a = 0) and a quadric c
             para.J = offset.x * offset.x + offset.y * offset.y + offset.z;
             para.clip = Bounds3(offset + Vec3{-2, -2, -1}, offset + Vec3{2, 2, 4});
             para.hasClip = true;
-            const Scene scene = single(makeQuadric(para), precision);
+            const Scene scene = single(makeQuadric(para));
             for (const Backend& b : allBackends()) {
                 CAPTURE(b.label);
                 CAPTURE(std::string(precisionName(precision)));
                 CAPTURE(offset.x);
                 const Ray ray{offset + Vec3{0.3, 0.4, 10}, {0, 0, -1}};
-                const auto accel = build(b, scene, ray.o);
+                const auto accel = build(b, scene, ray.o, precision);
                 const auto hit = accel->intersect(ray, 0, kInf);
                 REQUIRE(hit);
                 // The expanded coefficients at 1e5 carry J ~ 2e10: the
@@ -174,7 +174,7 @@ TEST_CASE("quadrics stack: paraboloid hit along its axis (a = 0) and a quadric c
                 MESSAGE(b.label << " " << std::string(precisionName(precision)) << " offset "
                                 << offset.x << ": paraboloid t = " << hit->t << " (exact 9.75)");
                 CHECK(std::abs(hit->t - 9.75) <= tol);
-                CHECK(isFinite(scene.surfaceAt(ray, *hit).ng));
+                CHECK(isFinite(scene.surfaceAt(ray, *hit, withPrecision(precision)).ng));
             }
 
             QuadricParams coneQ;
@@ -187,13 +187,13 @@ TEST_CASE("quadrics stack: paraboloid hit along its axis (a = 0) and a quadric c
             coneQ.J = offset.x * offset.x + offset.y * offset.y - offset.z * offset.z;
             coneQ.clip = Bounds3(offset + Vec3{-1, -1, 0}, offset + Vec3{1, 1, 1});
             coneQ.hasClip = true;
-            const Scene coneScene = single(makeQuadric(coneQ), precision);
+            const Scene coneScene = single(makeQuadric(coneQ));
             for (const Backend& b : allBackends()) {
                 CAPTURE(b.label);
                 const Ray ray{offset + Vec3{-0.6, 0, -0.8}, {0.6, 0, 0.8}};
-                const auto accel = build(b, coneScene, ray.o);
+                const auto accel = build(b, coneScene, ray.o, precision);
                 const auto hit = accel->intersect(ray, 0, kInf);
-                if (hit) CHECK(isFinite(coneScene.surfaceAt(ray, *hit).ng));
+                if (hit) CHECK(isFinite(coneScene.surfaceAt(ray, *hit, withPrecision(precision)).ng));
                 if (hit && offset.x == 0) CHECK(std::abs(hit->t - 1.0) <= 1e-3);
             }
         }

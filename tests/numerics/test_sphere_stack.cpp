@@ -12,6 +12,7 @@
 
 #include "geometry/spawn.h"
 #include "numerics/numerics_helpers.h"
+#include "shape_queries.h"
 
 using namespace raylab;
 using namespace raylab::numerics_test;
@@ -71,7 +72,7 @@ TEST_CASE("sphere stack: tiny sphere far away (r = 1e-3 at 1e4), double: no fals
                             continue;
                         }
                         if (!hit) continue;
-                        const auto own = scene.objects[i].shape->intersect(ray, 0, kInf);
+                        const auto own = intersect1(*scene.objects[i].shape, ray, 0, kInf);
                         if (!own || own->t != hit->t) ++notShapeT;
                         worst = std::max(worst, ulpDistance(hit->t, double(ref.t0)));
                     }
@@ -147,7 +148,6 @@ TEST_CASE("sphere stack: float intersectors keep hit/miss right up to D/r = 1e5"
     Scene scene;
     scene.materials.resize(1);
     scene.objects.push_back(shapeObject("ball", makeSphere({0, 0, 0}, 1)));
-    scene.objects[0].shape->setPrecision(Precision::Float);
     for (const Backend& b : allBackends()) {
         for (double D : {1e2, 1e3, 1e4, 1e5, 3e5, 1e6, 1e7}) {
             Rng rng(303);
@@ -156,7 +156,7 @@ TEST_CASE("sphere stack: float intersectors keep hit/miss right up to D/r = 1e5"
             for (int e = 0; e < 20; ++e) {
                 const Vec3 toEye = rng.direction();
                 const Vec3 eye(Vec3f(toEye * D));
-                const auto accel = build(b, scene, eye);
+                const auto accel = build(b, scene, eye, Precision::Float);
                 const Vec3 p1 = perpendicular(toEye), p2 = cross(toEye, p1);
                 for (int i = 0; i < 30; ++i) {
                     const double phi = rng.uniform(0, 2 * kPi);
@@ -281,11 +281,10 @@ SpawnCounts spawnFromSphere(const Backend& b, Precision precision, double scale)
     scene.materials.resize(1);
     scene.objects.push_back(shapeObject("glass", makeSphere(centre, r)));
     scene.objects[0].shape->setSidedness(Sidedness::Both);
-    scene.objects[0].shape->setPrecision(precision);
     const Vec3 eye = centre + Vec3{0.3, 0.2, 3.0};
     SpawnSettings spawn;
     spawn.reference = eye;
-    const auto accel = build(b, scene, eye);
+    const auto accel = build(b, scene, eye, precision);
     Rng rng(505);
     SpawnCounts c;
     for (int i = 0; i < 800; ++i) {
@@ -294,7 +293,7 @@ SpawnCounts spawnFromSphere(const Backend& b, Precision precision, double scale)
         const auto hit = accel->intersect(camera, 0, kInf);
         if (!hit) continue;
         ++c.cameraHits;
-        const SurfaceInteraction si = scene.surfaceAt(camera, *hit);
+        const SurfaceInteraction si = scene.surfaceAt(camera, *hit, withPrecision(precision));
         const Vec3 n = si.frontFace ? si.ng : -si.ng;  // towards the eye
         const Vec3 d = normalize(camera.d);
         const Vec3 out = d - n * (2 * dot(d, n));

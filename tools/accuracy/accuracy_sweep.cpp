@@ -83,7 +83,6 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     ov.precision = std::string(s.precision == Precision::Float ? "float" : "double");
     if (s.offset == OffsetMode::FixedEpsilon) ov.epsilon = s.epsilon;
     const RenderOptions options = resolveRenderOptions(scene, ov);
-    applyPrecision(scene, s.precision);
 
     Rendered out;
     const auto t0 = std::chrono::steady_clock::now();
@@ -307,15 +306,12 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     };
     // Every setting spells out every knob: the scene file's own "render"
     // block must not leak into the sweep (an "epsilon" there could not be
-    // switched back to the robust offset by a flag). The guard puts it back,
-    // with double precision, whatever happens next.
+    // switched back to the robust offset by a flag). The guard puts it back
+    // whatever happens next.
     struct SceneGuard {
         Scene& scene;
         RenderOverrides saved;
-        ~SceneGuard() {
-            scene.settings = saved;
-            applyPrecision(scene, Precision::Double);
-        }
+        ~SceneGuard() { scene.settings = saved; }
     } guard{scene, scene.settings};
     scene.settings = RenderOverrides{};
     const auto finish = [&]() -> AccuracyReport {

@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "renderer/accel/accelerator.h"
-#include "renderer/accel/embree_accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
@@ -127,12 +126,8 @@ std::unique_ptr<Accelerator> buildAccelerator(const std::string& name, const Sce
     std::unique_ptr<Accelerator> accel;
     for (int r = 0; r < runs; ++r) {
         accel.reset();
-        const auto t0 = Clock::now();
         accel = makeAccelerator(name, scene, options.accelOptions);
-        double t = secondsSince(t0);
-        if (const auto* e = dynamic_cast<const EmbreeAccelerator*>(accel.get()))
-            t = e->buildSeconds();
-        times.push_back(t);
+        times.push_back(accel->buildSeconds());
     }
     medianSeconds = median(times);
     return accel;
@@ -152,7 +147,6 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
     o.spp = 1;
     if (s.threads > 0) o.threads = s.threads;
     const RenderOptions options = resolveRenderOptions(scene, o);
-    applyPrecision(scene, options.precision);
     const EffectSet effects = analyseEffects(scene, options);
     const size_t pixels = size_t(options.width) * size_t(options.height);
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "renderer/accel/accelerator.h"
+#include "renderer/accel/embree_replay.h"
 #include "renderer/accel/ray_recorder.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
@@ -21,7 +22,6 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
-#include "tools/bench/embree_replay.h"
 #include "tools/report/bench_util.h"
 
 namespace raylab {
@@ -163,7 +163,6 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     if (options.threads > 0) o.threads = options.threads;
     const RenderOptions renderOptions = resolveRenderOptions(scene, o);
     checkMemoryBudget(scene, renderOptions);
-    applyPrecision(scene, renderOptions.precision);
     const EffectSet effects = analyseEffects(scene, renderOptions);
 
     LimitResult r;

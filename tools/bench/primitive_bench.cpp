@@ -63,17 +63,20 @@ struct Timing {
     double hitFraction = 0;
 };
 
-Timing timeIntersect(const Shape& shape, const std::vector<Ray>& rays, int iterations) {
+Timing timeIntersect(const Shape& shape, const std::vector<Ray>& rays, int iterations,
+                     Precision precision) {
+    IntersectOptions opt;
+    opt.precision = precision;
     Timing result;
     int hits = 0;
-    for (const Ray& r : rays) hits += shape.intersect(r, 0, kInf).has_value();  // warm-up
+    for (const Ray& r : rays) hits += shape.intersect(0, r, 0, kInf, opt).has_value();  // warm-up
     result.hitFraction = static_cast<double>(hits) / static_cast<double>(rays.size());
     result.ns = std::numeric_limits<double>::infinity();
     for (int run = 0; run < 3; ++run) {
         int sink = 0;
         const auto start = std::chrono::steady_clock::now();
         for (int it = 0; it < iterations; ++it) {
-            for (const Ray& r : rays) sink += shape.intersect(r, 0, kInf).has_value();
+            for (const Ray& r : rays) sink += shape.intersect(0, r, 0, kInf, opt).has_value();
         }
         const double ns =
             std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
@@ -175,11 +178,10 @@ std::array<double, 2> fanMissRates(PolygonTest test, Precision precision) {
     const std::array<Vec3, 4> corners{at(1, 1), at(-1, 1), at(-1, -1), at(1, -1)};
     const std::array<Vec3, 4> mids{at(0.07, 1), at(-1, 0.11), at(-0.05, -1), at(1, -0.13)};
     std::vector<std::unique_ptr<Shape>> quads;
-    for (int k = 0; k < 4; ++k) {
-        auto q = polygonShape({centre, mids[(k + 3) % 4], corners[k], mids[k]}, test);
-        q->setPrecision(precision);
-        quads.push_back(std::move(q));
-    }
+    for (int k = 0; k < 4; ++k)
+        quads.push_back(polygonShape({centre, mids[(k + 3) % 4], corners[k], mids[k]}, test));
+    IntersectOptions opt;
+    opt.precision = precision;
     Rng rng(99);
     std::array<double, 2> rates{};
     const int count = 4000;
@@ -192,7 +194,8 @@ std::array<double, 2> fanMissRates(PolygonTest test, Precision precision) {
             if (dot(dir, n) < 0.05) dir = dir + n * (0.05 + 2 * std::abs(dot(dir, n)));
             const Vec3 o = target + dir * rng.uniform(0.5, 20);
             bool hit = false;
-            for (const auto& q : quads) hit = hit || q->intersect(Ray{o, target - o}, 0, kInf);
+            for (const auto& q : quads)
+                hit = hit || q->intersect(0, Ray{o, target - o}, 0, kInf, opt);
             misses += !hit;
         }
         rates[kind] = 100.0 * misses / count;
@@ -218,10 +221,8 @@ void runPrimitiveBench(std::ostream& out, int iterations) {
         shape->setSidedness(Sidedness::Both);
         for (bool hitHeavy : {true, false}) {
             const std::vector<Ray> rays = makeRays(shape->bounds(), hitHeavy, hitHeavy ? 1 : 2);
-            shape->setPrecision(Precision::Double);
-            const Timing d = timeIntersect(*shape, rays, iterations);
-            shape->setPrecision(Precision::Float);
-            const Timing f = timeIntersect(*shape, rays, iterations);
+            const Timing d = timeIntersect(*shape, rays, iterations, Precision::Double);
+            const Timing f = timeIntersect(*shape, rays, iterations, Precision::Float);
             out << std::left << std::setw(32) << c.name << std::setw(6)
                 << (hitHeavy ? "hit" : "miss") << std::right << std::setprecision(1)
                 << std::setw(11) << d.ns << std::setw(7) << 100 * d.hitFraction << std::setw(11)

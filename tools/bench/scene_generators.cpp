@@ -1,5 +1,7 @@
 #include "tools/bench/scene_generators.h"
 
+#include "geometry/triangle_mesh.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -233,7 +235,7 @@ Scene makeHeightFieldScene(size_t targetTriangles) {
     }
     Object o;
     o.name = "terrain";
-    o.mesh = std::move(mesh);
+    o.shape = std::move(mesh);
     o.material = 0;
     scene.objects.push_back(std::move(o));
     return scene;

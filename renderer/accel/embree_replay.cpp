@@ -1,4 +1,4 @@
-#include "tools/bench/embree_replay.h"
+#include "renderer/accel/embree_replay.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -31,7 +31,7 @@ struct EmbreeReplay::Impl {
     void trace(const PreparedRay& p, RTCScene scene) {
         const RecordedRay& r = (*rays)[p.index];
         EmbreeQueryContext ctx;
-        EmbreeAccelerator::initContext(ctx, &r.ray, r.tMin, r.tMax);
+        ctx.init(&r.ray, r.tMin, r.tMax);
         if (p.occlusion) {
             RTCRay ray = p.rayhit.ray;
             rtcOccluded1(scene, &ctx.rtc, &ray);

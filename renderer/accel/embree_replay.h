@@ -1,7 +1,8 @@
 #pragma once
 // Bare replay of recorded rays through Embree: rtcIntersect1 / rtcOccluded1
 // on an EmbreeAccelerator's RTCScene, with no shading, no Hit decoding and no
-// virtual dispatch. The rays are converted once, up front, exactly as
+// virtual dispatch. The one entry point into the Embree adaptor's internals
+// that tools need (`raylab bench limit`). The rays are converted once, up front, exactly as
 // EmbreeAccelerator converts them (float, relative to its origin, mask all
 // ones), and every query passes the same extended context (the exact double
 // ray for the analytic shapes), so the work inside Embree is the renderer's.

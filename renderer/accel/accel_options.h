@@ -1,0 +1,33 @@
+#pragma once
+// How an accelerator is built: the Embree build settings and the accuracy
+// knobs of the analytic intersectors, fixed for the accelerator's lifetime.
+
+#include "geometry/shape.h"
+#include "geometry/vec.h"
+
+namespace raylab {
+
+struct AccelOptions {
+    enum class BvhQuality { Low, Medium, High };
+    BvhQuality quality = BvhQuality::Medium;  ///< Embree only
+    bool robust = false;                      ///< Embree only: RTC_SCENE_FLAG_ROBUST
+    /// Geometry is handed to Embree in float relative to this point (normally
+    /// the eye), so far-from-origin scenes keep their precision near the camera.
+    Vec3 origin{0, 0, 0};
+    /// Handed to every shape query (precision, polygon inside test).
+    IntersectOptions intersect;
+};
+
+/// "low", "medium" or "high": the spelling of --bvh-quality and the JSON key.
+inline const char* bvhQualityName(AccelOptions::BvhQuality q) {
+    switch (q) {
+        case AccelOptions::BvhQuality::Low:
+            return "low";
+        case AccelOptions::BvhQuality::High:
+            return "high";
+        default:
+            return "medium";
+    }
+}
+
+}  // namespace raylab

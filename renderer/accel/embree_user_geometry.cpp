@@ -1,0 +1,142 @@
+#include "renderer/accel/embree_user_geometry.h"
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+#include "renderer/accel/embree_float.h"
+
+namespace raylab {
+
+// The callbacks recover the extended context from Embree's pointer to its
+// first member; that cast is only valid for a standard-layout struct.
+static_assert(std::is_standard_layout<EmbreeQueryContext>::value,
+              "EmbreeQueryContext must be standard-layout");
+static_assert(offsetof(EmbreeQueryContext, rtc) == 0, "rtc must be the first member");
+
+namespace {
+
+const EmbreeUserTable& tableOf(void* geometryUserPtr) {
+    return *static_cast<const EmbreeUserTable*>(geometryUserPtr);
+}
+
+EmbreeQueryContext& contextOf(RTCIntersectContext* context) {
+    return *reinterpret_cast<EmbreeQueryContext*>(context);
+}
+
+/// World-space double ray of lane i of Embree's float ray data (packet and
+/// bare-replay queries, which carry no double ray).
+Ray laneRay(RTCRayN* rays, unsigned n, unsigned i, const Vec3& origin) {
+    const Vec3 o{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+    const Vec3 d{RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+    return Ray{o + origin, d};
+}
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+    // Computed from Shape::bounds(prim) once at build time (where bad bounds
+    // can still throw); the userPtr argument of rtcSetGeometryBoundsFunction is
+    // ignored by Embree 3.13.5, so the table comes from geometryUserPtr.
+    *args->bounds_o = tableOf(args->geometryUserPtr).boxes[args->primID];
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+    const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
+    EmbreeQueryContext& ctx = contextOf(args->context);
+    const unsigned n = args->N;
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
+    const uint32_t entry = args->primID;
+    const EmbreeUserTable::Entry& e = table.entries[entry];
+    // Single-ray queries from EmbreeAccelerator carry the exact double ray, so
+    // the shape computes the same t, u, v as in the naive loop.
+    const bool exact = n == 1 && ctx.ray != nullptr;
+
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        float& tfar = RTCRayN_tfar(rays, n, i);
+        std::optional<ShapeHit> h;
+        if (exact) {
+            // Strict tMin < t < best-so-far in double (Shape contract). Exact
+            // ties (coplanar surfaces, e.g. a cone's cap on the floor) go to
+            // the lower entry (scene order), as in the naive loop, which visits
+            // objects in order: so the limit is opened by one ulp for a
+            // lower entry and the tie is settled here.
+            const bool winsTies = ctx.exactHit && entry < ctx.bestEntry;
+            const double tMax =
+                winsTies ? std::nextafter(ctx.bestT, std::numeric_limits<double>::infinity())
+                         : ctx.bestT;
+            h = e.shape->intersect(e.prim, *ctx.ray, ctx.tMin, tMax, table.options);
+            if (h && !(h->t < ctx.bestT || (winsTies && h->t == ctx.bestT))) continue;
+        } else {
+            h = e.shape->intersect(e.prim, laneRay(rays, n, i, table.origin),
+                                   RTCRayN_tnear(rays, n, i), tfar, table.options);
+        }
+        if (!h) continue;
+        // A triangle may already have shrunk tfar below this (double) hit.
+        const float t = static_cast<float>(h->t);
+        if (!(t <= tfar)) continue;
+
+        // Embree wants every hit field written, but raylab never reads Ng
+        // (Scene::surfaceAt computes the exact normal for the winning hit),
+        // so a cheap stand-in facing the ray saves a surfaceAt per candidate.
+        tfar = t;
+        RTCHitN_Ng_x(hits, n, i) = -RTCRayN_dir_x(rays, n, i);
+        RTCHitN_Ng_y(hits, n, i) = -RTCRayN_dir_y(rays, n, i);
+        RTCHitN_Ng_z(hits, n, i) = -RTCRayN_dir_z(rays, n, i);
+        RTCHitN_u(hits, n, i) = static_cast<float>(h->u);
+        RTCHitN_v(hits, n, i) = static_cast<float>(h->v);
+        RTCHitN_primID(hits, n, i) = args->primID;
+        RTCHitN_geomID(hits, n, i) = args->geomID;
+        RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+        if (exact) {
+            ctx.bestT = h->t;
+            ctx.bestU = h->u;
+            ctx.bestV = h->v;
+            ctx.bestEntry = entry;
+            ctx.exactHit = true;
+        }
+    }
+}
+
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+    const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
+    const EmbreeQueryContext& ctx = contextOf(args->context);
+    const unsigned n = args->N;
+    RTCRayN* rays = args->ray;
+    const EmbreeUserTable::Entry& e = table.entries[args->primID];
+    const bool exact = n == 1 && ctx.ray != nullptr;
+
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        float& tfar = RTCRayN_tfar(rays, n, i);
+        const bool hit =
+            exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
+                  : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
+                                      RTCRayN_tnear(rays, n, i), tfar, table.options);
+        if (hit) tfar = -kInfF;  // Embree's "occluded" marker
+    }
+}
+
+}  // namespace
+
+unsigned attachUserGeometry(const EmbreeDevice& device, RTCScene scene,
+                            const EmbreeUserTable& table, RTCBuildQuality quality) {
+    // Creation order from NUMERICS.md §1: count, user data, callbacks, commit, attach.
+    EmbreeGeometry geom(device, RTC_GEOMETRY_TYPE_USER);
+    device.check("rtcNewGeometry(USER)");
+    rtcSetGeometryUserPrimitiveCount(geom.get(), static_cast<unsigned>(table.entries.size()));
+    rtcSetGeometryUserData(geom.get(), const_cast<EmbreeUserTable*>(&table));
+    rtcSetGeometryBoundsFunction(geom.get(), &boundsCallback, nullptr);
+    rtcSetGeometryIntersectFunction(geom.get(), &intersectCallback);
+    rtcSetGeometryOccludedFunction(geom.get(), &occludedCallback);
+    rtcSetGeometryBuildQuality(geom.get(), quality);
+    rtcCommitGeometry(geom.get());
+    device.check("user geometry setup");
+    const unsigned id = rtcAttachGeometry(scene, geom.get());
+    device.check("rtcAttachGeometry(USER)");
+    // geom's destructor releases our reference; the scene keeps its own.
+    return id;
+}
+
+}  // namespace raylab

@@ -1,0 +1,69 @@
+#pragma once
+// Every primitive that is not a native Embree triangle goes into ONE Embree
+// user geometry (Mitsuba's adaptor pattern, STYLE.md §2.3): its generic bounds /
+// intersect / occluded callbacks forward to the pure Shape methods, so a new
+// primitive needs no Embree code. Embree's primID indexes a table of
+// (shape, primitive, object) entries in scene order.
+//
+// Analytic shapes are intersected with the caller's exact double ray, carried
+// in an extended RTCIntersectContext, so their t, u, v are bit-identical to
+// the naive loop's. Internal to renderer/accel (and white-box tests).
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/ray.h"
+#include "geometry/shape.h"
+#include "renderer/accel/embree_device.h"
+
+namespace raylab {
+
+/// \brief Per-query data reaching the user-geometry callbacks through Embree's
+///   context pointer (the only pointer Embree guarantees to pass unchanged).
+struct EmbreeQueryContext {
+    RTCIntersectContext rtc;  ///< Embree's context; must stay the first member
+    /// The caller's exact double ray, or null: shapes are then tested against
+    /// Embree's float copy of the ray (made relative to the origin). Set only
+    /// for rtcIntersect1/rtcOccluded1: one context cannot describe the rays of
+    /// a packet or stream, and incoherent streams call back with N = 1.
+    const Ray* ray = nullptr;
+    double tMin = 0;   ///< exclusive lower bound, double (exact path only)
+    double bestT = 0;  ///< closest user-geometry hit so far; starts at tMax
+    double bestU = 0;  ///< its shape parameters
+    double bestV = 0;
+    uint32_t bestEntry = 0;  ///< its entry in the table
+    bool exactHit = false;   ///< a hit was recorded from `ray`
+
+    /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
+    void init(const Ray* r, double tMinimum, double tMax) {
+        rtcInitIntersectContext(&rtc);
+        ray = r;
+        tMin = tMinimum;
+        bestT = tMax;
+        bestU = bestV = 0;
+        bestEntry = 0;
+        exactHit = false;
+    }
+};
+
+/// User data of the user geometry (read by the callbacks).
+struct EmbreeUserTable {
+    struct Entry {
+        const Shape* shape;
+        uint32_t prim;
+        uint32_t object;  ///< index into Scene::objects
+    };
+    std::vector<Entry> entries;    ///< indexed by Embree's primID
+    std::vector<RTCBounds> boxes;  ///< primID -> padded float box, relative to origin
+    Vec3 origin;                   ///< to rebuild world rays from Embree's float lanes
+    IntersectOptions options;      ///< handed to every shape query
+};
+
+/// \brief Creates the user geometry over `table` (which must outlive the
+///   scene) and attaches it to `scene`. \return its geomID.
+unsigned attachUserGeometry(const EmbreeDevice& device, RTCScene scene,
+                            const EmbreeUserTable& table, RTCBuildQuality quality);
+
+}  // namespace raylab
