@@ -109,13 +109,16 @@ std::optional<Shape::PrimitiveHit> TriangleMesh::intersectAny(const Ray& ray, do
                                                               double tMax,
                                                               const IntersectOptions&) const {
     const WatertightRay wray(ray);  // per-ray constants, computed once
+    // Local copies of the arrays' addresses: the loop then keeps them in
+    // registers instead of reloading them after every store to `best`.
+    const Vec3* const p = positions.data();
+    const std::array<uint32_t, 3>* const tri = triangles.data();
+    const uint32_t n = uint32_t(triangles.size());
     std::optional<PrimitiveHit> best;
     // Each hit shrinks the interval, so later triangles only count if closer;
     // on an exact tie the lower index wins.
-    for (uint32_t i = 0; i < triangles.size(); ++i) {
-        const auto& t = triangles[i];
-        const auto h =
-            intersectTriangle(wray, positions[t[0]], positions[t[1]], positions[t[2]], tMin, tMax);
+    for (uint32_t i = 0; i < n; ++i) {
+        const auto h = intersectTriangle(wray, p[tri[i][0]], p[tri[i][1]], p[tri[i][2]], tMin, tMax);
         if (!h || !acceptsFacing(i, ray.d)) continue;
         tMax = h->t;
         best = PrimitiveHit{i, ShapeHit{h->t, h->u, h->v}};
@@ -126,12 +129,13 @@ std::optional<Shape::PrimitiveHit> TriangleMesh::intersectAny(const Ray& ray, do
 bool TriangleMesh::occludedAny(const Ray& ray, double tMin, double tMax,
                                const IntersectOptions&) const {
     const WatertightRay wray(ray);
-    for (uint32_t i = 0; i < triangles.size(); ++i) {
-        const auto& t = triangles[i];
+    const Vec3* const p = positions.data();
+    const std::array<uint32_t, 3>* const tri = triangles.data();
+    const uint32_t n = uint32_t(triangles.size());
+    for (uint32_t i = 0; i < n; ++i)
         if (acceptsFacing(i, ray.d) &&
-            intersectTriangle(wray, positions[t[0]], positions[t[1]], positions[t[2]], tMin, tMax))
+            intersectTriangle(wray, p[tri[i][0]], p[tri[i][1]], p[tri[i][2]], tMin, tMax))
             return true;
-    }
     return false;
 }
 
