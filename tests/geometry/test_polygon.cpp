@@ -257,6 +257,7 @@ namespace {
 /// orientations and the coordinates round. All share the exact same vertex values.
 struct Fan {
     std::vector<std::unique_ptr<Shape>> quads;
+    IntersectOptions opt;  ///< the arithmetic the quads are intersected in
     Vec3 centre;
     std::array<Vec3, 4> mids;
     Vec3 normal;
@@ -278,10 +279,9 @@ Fan makeFan(PolygonTest test, Precision precision) {
         // CCW seen from +n: centre, mid k (top edge side ...), corner, next mid.
         p.vertices = {fan.centre, fan.mids[(k + 3) % 4], corners[k], fan.mids[k]};
         p.test = test;
-        auto quad = makePolygon(p);
-        const IntersectOptions opt = withPrecision(precision);
-        fan.quads.push_back(std::move(quad));
+        fan.quads.push_back(makePolygon(p));
     }
+    fan.opt = withPrecision(precision);
     return fan;
 }
 
@@ -306,7 +306,7 @@ FanResult shootFan(const Fan& fan, test::Rng& rng, int count, bool centreOnly) {
         const Vec3 o = target + dir * rng.uniform(0.5, 20);
         const Ray ray{o, target - o};
         int hits = 0;
-        for (const auto& q : fan.quads) hits += intersect1(*q, ray, 0, kInf).has_value();
+        for (const auto& q : fan.quads) hits += intersect1(*q, ray, 0, kInf, fan.opt).has_value();
         ++r.rays;
         if (hits == 0)
             ++r.zero;
@@ -356,13 +356,12 @@ TEST_CASE("polygon: watertight test with exact zeros (ray exactly through a vert
                                  {-1, 0, 0}, {-1, -1, 0},  {0, -1, 0}, {0.5, -0.25, 0}};
     const Vec3 centre{0, 0, 0};
     for (Precision prec : kPrecisions) {
+        const IntersectOptions opt = withPrecision(prec);
         std::vector<std::unique_ptr<Shape>> fan;
         for (size_t k = 0; k < ring.size(); ++k) {
             std::vector<Vec3> v{centre, ring[k], ring[(k + 1) % ring.size()]};
             if (k % 4 == 1) v.insert(v.begin() + 2, (ring[k] + ring[(k + 1) % ring.size()]) * 0.5);
-            auto p = polygon(v, PolygonTest::Watertight);
-            const IntersectOptions opt = withPrecision(prec);
-            fan.push_back(std::move(p));
+            fan.push_back(polygon(v, PolygonTest::Watertight));
         }
         // Targets: the centre vertex, points on the spokes, and spoke midpoints.
         std::vector<Vec3> targets{centre};
@@ -377,7 +376,7 @@ TEST_CASE("polygon: watertight test with exact zeros (ray exactly through a vert
                     const Vec3 d{dx, dy, -4};  // dominant axis z; shear factors are dyadic
                     const Ray ray{target - d * 2.0, d};
                     int hits = 0;
-                    for (const auto& p : fan) hits += intersect1(*p, ray, 0, kInf).has_value();
+                    for (const auto& p : fan) hits += intersect1(*p, ray, 0, kInf, opt).has_value();
                     ++rays;
                     exactlyOne += hits == 1;
                 }
@@ -403,12 +402,12 @@ TEST_CASE("polygon: closed cube of quads, rays from inside through edges and cor
     const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                               {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     for (Precision prec : kPrecisions) {
+        const IntersectOptions opt = withPrecision(prec);
         for (PolygonTest t : kTests) {
             std::vector<std::unique_ptr<Shape>> quads;
             for (const auto& f : faces) {
                 auto q = polygon({corner(f[0]), corner(f[1]), corner(f[2]), corner(f[3])}, t);
                 q->setSidedness(Sidedness::Inside);
-                const IntersectOptions opt = withPrecision(prec);
                 quads.push_back(std::move(q));
             }
             test::Rng rng(31);
@@ -425,7 +424,7 @@ TEST_CASE("polygon: closed cube of quads, rays from inside through edges and cor
                 }
                 int hits = 0;
                 for (const auto& q : quads) {
-                    hits += intersect1(*q, Ray{o, target - o}, 0, kInf).has_value();
+                    hits += intersect1(*q, Ray{o, target - o}, 0, kInf, opt).has_value();
                 }
                 ++rays[kind];
                 zero[kind] += hits == 0;
