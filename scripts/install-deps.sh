@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages raylab needs, only those that are missing.
 # Idempotent: a second run does nothing and needs no network. Uses sudo when
 # not root. Usage: scripts/install-deps.sh [--optional]
-#   --optional  also the tools for fuzzing and distributed rendering
+#   --optional  also the tools for fuzzing, distributed rendering and the POV-Ray comparison
 set -euo pipefail
 
 required=(
@@ -13,10 +13,12 @@ required=(
   libtinyobjloader-dev  # tinyobjloader: OBJ/MTL meshes
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview
+  python3               # scripts/spd (SPD generators, NFF -> POV-Ray) and their tests
 )
 optional=(
   clang libclang-rt-14-dev  # libFuzzer targets (make fuzz)
   libopenmpi-dev openmpi-bin # distributed rendering (-DRAYLAB_MPI=ON)
+  povray                     # scripts/bench-povray.sh: raylab vs POV-Ray on the SPD scenes
 )
 
 wanted=("${required[@]}")

@@ -1,0 +1,286 @@
+#!/usr/bin/env python3
+"""raylab against POV-Ray 3.7 on the seven SPD scenes (issue 20, bar 1).
+
+    scripts/bench-povray.py [--repeats 3] [--threads 2] [--scenes balls,gears,...]
+                            [--raylab build/bin/raylab] [--povray povray]
+                            [--spd-dir ../shared/scenes/spd] [--images DIR]
+                            [--json FILE] [--work DIR]
+
+For each scene: balls, gears, rings, teapot and tetra are read from
+../shared/scenes/spd (SPD's default-size files); mount and tree are written by
+scripts/spd/generate.py (byte-identical to SPD's generators). Every NFF is
+converted to POV-Ray's language by scripts/spd/nff2pov.py. Neither step is
+timed. Then, after one untimed warm-up run of each renderer per scene (it
+also makes the pictures), the two commands
+
+    povray +ISCENE.pov +OSCENE.png +W512 +H512 -D -A +WT<threads> -V -GA
+    raylab render SCENE.nff --spd -o SCENE.exr --quiet --threads <threads> --stats SCENE.json
+
+run interleaved, N rounds (the order of the two alternates between scenes
+and rounds), and the table shows the median wall-clock time of each whole
+process (start-up, parse, build, render, writing the picture) and the ratio
+of the medians. -A: no anti-aliasing (POV then traces one ray through each
+pixel centre; raylab's --spd traces the 513x513 pixel corners); -D: no
+display window; -V -GA: no console output; max_trace_level 5 is in the scene
+(SPD depth 5, the eye ray is level 1 in both). raylab's own --stats
+breakdown (parse, build, render, write; medians of the same runs) shows where
+its time goes; "other" is the rest of the wall time (process start, Embree
+device and thread set-up, exit). CPU time (user + system, from wait4) is
+printed too: it is less disturbed than wall time when other jobs share the
+cores.
+
+--images DIR writes DIR/SCENE.png: raylab's picture (left, `--png` of the
+warm-up run) and POV-Ray's (right), box-filtered to 256x256, plus the mean
+difference between them. A benchmark, not a test: it asserts nothing about
+speed. Exit status 1 if a renderer fails or a tool is missing.
+"""
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(TOP, "scripts", "spd"))
+import generate  # noqa: E402
+import nff2pov  # noqa: E402
+import png_compare  # noqa: E402
+
+SCENES = ["balls", "gears", "mount", "rings", "teapot", "tetra", "tree"]
+GENERATED = {"mount", "tree"}
+
+
+def die(msg):
+    sys.stderr.write("bench-povray: error: %s\n" % msg)
+    sys.exit(1)
+
+
+def cpu_model():
+    try:
+        with open("/proc/cpuinfo") as fh:
+            for line in fh:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def mem_total_gib():
+    try:
+        with open("/proc/meminfo") as fh:
+            for line in fh:
+                if line.startswith("MemTotal:"):
+                    return int(line.split()[1]) / 1024.0 / 1024.0
+    except OSError:
+        pass
+    return float("nan")
+
+
+def loadavg():
+    try:
+        return os.getloadavg()
+    except OSError:
+        return (float("nan"),) * 3
+
+
+def run_timed(cmd, log_path):
+    """Runs cmd; returns (wall seconds, user+system CPU seconds)."""
+    with open(log_path, "ab") as log:
+        t0 = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT)
+        _, status, ru = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - t0
+        proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode != 0:
+        with open(log_path, "rb") as fh:
+            tail = fh.read()[-2000:].decode(errors="replace")
+        die("%s failed (exit %d):\n%s" % (" ".join(cmd), proc.returncode, tail))
+    return wall, ru.ru_utime + ru.ru_stime
+
+
+def tool_version(cmd):
+    try:
+        out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=30).stdout
+        lines = [l for l in out.decode(errors="replace").splitlines() if l.strip() and "configuration file" not in l]
+        return lines[0].strip() if lines else "unknown"
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def git_commit():
+    try:
+        out = subprocess.run(["git", "-C", TOP, "rev-parse", "--short", "HEAD"], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, timeout=30).stdout.decode().strip()
+        dirty = subprocess.run(["git", "-C", TOP, "status", "--porcelain", "--untracked-files=no"],
+                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=30).stdout.strip()
+        return out + ("+changes" if dirty else "") if out else "unknown"
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="raylab vs POV-Ray on the SPD scenes (interleaved, medians).")
+    ap.add_argument("--repeats", type=int, default=3, help="timed rounds (default 3)")
+    ap.add_argument("--threads", type=int, default=2, help="threads of both renderers (default 2)")
+    ap.add_argument("--scenes", default=",".join(SCENES), help="comma-separated subset of " + ",".join(SCENES))
+    ap.add_argument("--raylab", default=os.path.join(TOP, "build", "bin", "raylab"))
+    ap.add_argument("--povray", default="povray")
+    ap.add_argument("--spd-dir", default=os.path.join(TOP, "..", "shared", "scenes", "spd"),
+                    help="where balls/gears/rings/teapot/tetra.nff are (default ../shared/scenes/spd)")
+    ap.add_argument("--pov-triangles", choices=["mesh2", "mesh", "objects"], default="mesh2",
+                    help="nff2pov --triangles (default mesh2)")
+    ap.add_argument("--pov-polygons", choices=["triangulate", "polygon"], default="triangulate",
+                    help="nff2pov --polygons (default triangulate)")
+    ap.add_argument("--images", metavar="DIR", help="write raylab | POV-Ray thumbnails DIR/SCENE.png")
+    ap.add_argument("--json", metavar="FILE", help="write every sample and median as JSON")
+    ap.add_argument("--work", metavar="DIR", help="keep the scenes and outputs here (default: a temporary folder)")
+    args = ap.parse_args(argv)
+
+    scenes = [s for s in args.scenes.split(",") if s]
+    for s in scenes:
+        if s not in SCENES:
+            die("unknown scene '%s' (one of %s)" % (s, ", ".join(SCENES)))
+    if args.repeats < 1 or args.threads < 1:
+        die("--repeats and --threads must be >= 1")
+    raylab = os.path.abspath(args.raylab)
+    if not os.access(raylab, os.X_OK):
+        die("no raylab binary at %s (build first, or give --raylab)" % raylab)
+    povray = shutil.which(args.povray)
+    if not povray:
+        die("POV-Ray not found ('%s'): scripts/install-deps.sh --optional installs it" % args.povray)
+
+    work = os.path.abspath(args.work) if args.work else tempfile.mkdtemp(prefix="bench-povray-")
+    os.makedirs(work, exist_ok=True)
+    try:
+        return bench(args, scenes, raylab, povray, work)
+    finally:
+        if not args.work:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+def bench(args, scenes, raylab, povray, work):
+    # ---- prepare the scenes (untimed) ----
+    nff = {}
+    for s in scenes:
+        path = os.path.join(work, s + ".nff")
+        if s in GENERATED:
+            fn, size = generate.GENERATORS[s]
+            with open(path, "w", encoding="ascii") as fh:
+                fh.write(fn(size))
+        else:
+            src = os.path.join(args.spd_dir, s + ".nff")
+            if not os.path.isfile(src):
+                die("%s is missing (give --spd-dir, or leave the scene out with --scenes)" % src)
+            shutil.copyfile(src, path)
+        nff[s] = path
+        with open(path, encoding="ascii") as fh:
+            text = fh.read()
+        with open(os.path.join(work, s + ".pov"), "w", encoding="ascii") as fh:
+            fh.write(nff2pov.convert(text, args.pov_triangles, args.pov_polygons, s + ".nff"))
+
+    def pov_cmd(s, png=None):
+        return [povray, "+I" + os.path.join(work, s + ".pov"), "+O" + (png or os.path.join(work, s + "_pov.png")),
+                "+W512", "+H512", "-D", "-A", "+WT%d" % args.threads, "-V", "-GA"]
+
+    def ray_cmd(s, extra=()):
+        return [raylab, "render", nff[s], "--spd", "-o", os.path.join(work, s + ".exr"), "--quiet",
+                "--threads", str(args.threads), "--stats", os.path.join(work, s + "_stats.json")] + list(extra)
+
+    machine = {
+        "cpu": cpu_model(), "logical_cpus": os.cpu_count(), "memory_gib": round(mem_total_gib(), 1),
+        "os": platform.platform(), "povray": tool_version([povray, "--version"]),
+        "raylab_commit": git_commit(), "threads": args.threads, "repeats": args.repeats,
+        "pov_form": "triangles %s, polygons %s" % (args.pov_triangles, args.pov_polygons),
+        "date": datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
+        "load_before": loadavg(),
+    }
+
+    # ---- warm-up: one untimed run of each, which also makes the pictures ----
+    log = os.path.join(work, "log.txt")
+    for s in scenes:
+        run_timed(pov_cmd(s), log)
+        run_timed(ray_cmd(s, ["--png", os.path.join(work, s + "_raylab.png")]), log)
+
+    # ---- timed, interleaved rounds ----
+    samples = {s: {"povray": [], "raylab": [], "povray_cpu": [], "raylab_cpu": [], "stats": []} for s in scenes}
+    for r in range(args.repeats):
+        for i, s in enumerate(scenes):
+            order = ["povray", "raylab"] if (r + i) % 2 == 0 else ["raylab", "povray"]
+            for who in order:
+                if who == "povray":
+                    wall, cpu = run_timed(pov_cmd(s), log)
+                else:
+                    wall, cpu = run_timed(ray_cmd(s), log)
+                    with open(os.path.join(work, s + "_stats.json")) as fh:
+                        st = json.load(fh)
+                    samples[s]["stats"].append(st["time_s"])
+                    samples[s]["rays"] = st["rays"]["total"]
+                    samples[s]["primitives"] = st["primitives"]
+                samples[s][who].append(wall)
+                samples[s][who + "_cpu"].append(cpu)
+    machine["load_after"] = loadavg()
+
+    # ---- report ----
+    med = statistics.median
+    rows = []
+    for s in scenes:
+        d = samples[s]
+        pov, ray = med(d["povray"]), med(d["raylab"])
+        phase = {k: med([t[k] for t in d["stats"]]) for k in ("parse", "build", "render", "write")}
+        phase["other"] = ray - sum(phase.values())
+        rows.append({"scene": s, "povray_s": pov, "raylab_s": ray, "ratio": pov / ray,
+                     "povray_cpu_s": med(d["povray_cpu"]), "raylab_cpu_s": med(d["raylab_cpu"]),
+                     "raylab_phases_s": phase, "rays": d.get("rays"), "primitives": d.get("primitives"),
+                     "samples": {k: d[k] for k in ("povray", "raylab", "povray_cpu", "raylab_cpu")}})
+
+    la, lb = machine["load_before"], machine["load_after"]
+    print("machine: %s, %d logical CPUs, %.1f GiB; %s" % (machine["cpu"], machine["logical_cpus"],
+                                                           machine["memory_gib"], machine["os"]))
+    print("%s; raylab %s; %d threads each; %d interleaved rounds, medians; %s"
+          % (machine["povray"], machine["raylab_commit"], args.threads, args.repeats, machine["date"]))
+    print("load average (1/5/15 min): before %.2f %.2f %.2f, after %.2f %.2f %.2f" % (la + lb))
+    print("POV-Ray scene form: %s" % machine["pov_form"])
+    print()
+    print("| scene | POV-Ray s | raylab s | raylab faster by | POV-Ray CPU s | raylab CPU s |"
+          " raylab parse | build | render | write | other |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for row in rows:
+        p = row["raylab_phases_s"]
+        print("| %s | %.3f | %.3f | **%.1f×** | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |" % (
+            row["scene"], row["povray_s"], row["raylab_s"], row["ratio"], row["povray_cpu_s"],
+            row["raylab_cpu_s"], p["parse"], p["build"], p["render"], p["write"], p["other"]))
+    print()
+    print("smallest ratio: %.1f× (%s)" % min((r["ratio"], r["scene"]) for r in rows))
+
+    if args.images:
+        os.makedirs(args.images, exist_ok=True)
+        print()
+        for s in scenes:
+            a = png_compare.read_png(os.path.join(work, s + "_raylab.png"))
+            b = png_compare.read_png(os.path.join(work, s + "_pov.png"))
+            c = png_compare.compare(a, b)
+            wa, ha, ra = png_compare.downscale(*a, 2)
+            _, _, rb = png_compare.downscale(*b, 2)
+            gap = b"\xff" * 12
+            png_compare.write_png(os.path.join(args.images, s + ".png"), 2 * wa + 4, ha,
+                                  [x + gap + y for x, y in zip(ra, rb)])
+            print("%s: raylab | POV-Ray in %s; mean |difference| %.1f of 255, pixels differing by > 32 levels %.1f%%"
+                  % (s, os.path.join(args.images, s + ".png"), sum(c["mean_abs"]) / 3, 100 * c["over32"]))
+
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump({"machine": machine, "scenes": rows}, fh, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
