@@ -2,6 +2,7 @@
 """raylab against POV-Ray 3.7 on the seven SPD scenes (issue 20, bar 1).
 
     scripts/bench-povray.py [--repeats 3] [--threads 2] [--scenes balls,gears,...]
+                            [--pov-triangles mesh2[,mesh][,objects]] [--pov-polygons triangulate|polygon]
                             [--raylab build/bin/raylab] [--povray povray]
                             [--spd-dir ../shared/scenes/spd] [--images DIR]
                             [--json FILE] [--work DIR]
@@ -16,7 +17,7 @@ also makes the pictures), the two commands
     povray +ISCENE.pov +OSCENE.png +W512 +H512 -D -A +WT<threads> -V -GA
     raylab render SCENE.nff --spd -o SCENE.exr --quiet --threads <threads> --stats SCENE.json
 
-run interleaved, N rounds (the order of the two alternates between scenes
+run interleaved, N rounds (the order of the commands rotates between scenes
 and rounds), and the table shows the median wall-clock time of each whole
 process (start-up, parse, build, render, writing the picture) and the ratio
 of the medians. -A: no anti-aliasing (POV then traces one ray through each
@@ -28,6 +29,10 @@ its time goes; "other" is the rest of the wall time (process start, Embree
 device and thread set-up, exit). CPU time (user + system, from wait4) is
 printed too: it is less disturbed than wall time when other jobs share the
 cores.
+
+--pov-triangles mesh2,objects (any of mesh2, mesh, objects) times POV-Ray on
+each form of the scene in the same rounds and compares raylab with the fastest
+(per scene); the times of every form are printed below the table.
 
 --images DIR writes DIR/SCENE.png: raylab's picture (left, `--png` of the
 warm-up run) and POV-Ray's (right), box-filtered to 256x256, plus the mean
@@ -136,8 +141,9 @@ def main(argv=None):
     ap.add_argument("--povray", default="povray")
     ap.add_argument("--spd-dir", default=os.path.join(TOP, "..", "shared", "scenes", "spd"),
                     help="where balls/gears/rings/teapot/tetra.nff are (default ../shared/scenes/spd)")
-    ap.add_argument("--pov-triangles", choices=["mesh2", "mesh", "objects"], default="mesh2",
-                    help="nff2pov --triangles (default mesh2)")
+    ap.add_argument("--pov-triangles", default="mesh2",
+                    help="nff2pov --triangles: mesh2, mesh, objects, or several comma-separated: each form is "
+                         "timed in the same interleaved rounds and the table shows the fastest (default mesh2)")
     ap.add_argument("--pov-polygons", choices=["triangulate", "polygon"], default="triangulate",
                     help="nff2pov --polygons (default triangulate)")
     ap.add_argument("--images", metavar="DIR", help="write raylab | POV-Ray thumbnails DIR/SCENE.png")
@@ -146,6 +152,12 @@ def main(argv=None):
     args = ap.parse_args(argv)
 
     scenes = [s for s in args.scenes.split(",") if s]
+    args.pov_forms = [f for f in args.pov_triangles.split(",") if f]
+    for f in args.pov_forms:
+        if f not in ("mesh2", "mesh", "objects"):
+            die("unknown --pov-triangles form '%s' (mesh2, mesh, objects)" % f)
+    if not args.pov_forms:
+        die("--pov-triangles needs a form")
     for s in scenes:
         if s not in SCENES:
             die("unknown scene '%s' (one of %s)" % (s, ", ".join(SCENES)))
@@ -184,11 +196,13 @@ def bench(args, scenes, raylab, povray, work):
         nff[s] = path
         with open(path, encoding="ascii") as fh:
             text = fh.read()
-        with open(os.path.join(work, s + ".pov"), "w", encoding="ascii") as fh:
-            fh.write(nff2pov.convert(text, args.pov_triangles, args.pov_polygons, s + ".nff"))
+        for form in args.pov_forms:
+            with open(os.path.join(work, "%s_%s.pov" % (s, form)), "w", encoding="ascii") as fh:
+                fh.write(nff2pov.convert(text, form, args.pov_polygons, s + ".nff"))
 
-    def pov_cmd(s, png=None):
-        return [povray, "+I" + os.path.join(work, s + ".pov"), "+O" + (png or os.path.join(work, s + "_pov.png")),
+    def pov_cmd(s, form):
+        return [povray, "+I" + os.path.join(work, "%s_%s.pov" % (s, form)),
+                "+O" + os.path.join(work, "%s_pov_%s.png" % (s, form)),
                 "+W512", "+H512", "-D", "-A", "+WT%d" % args.threads, "-V", "-GA"]
 
     def ray_cmd(s, extra=()):
@@ -199,7 +213,7 @@ def bench(args, scenes, raylab, povray, work):
         "cpu": cpu_model(), "logical_cpus": os.cpu_count(), "memory_gib": round(mem_total_gib(), 1),
         "os": platform.platform(), "povray": tool_version([povray, "--version"]),
         "raylab_commit": git_commit(), "threads": args.threads, "repeats": args.repeats,
-        "pov_form": "triangles %s, polygons %s" % (args.pov_triangles, args.pov_polygons),
+        "pov_form": "triangles %s, polygons %s" % (" / ".join(args.pov_forms), args.pov_polygons),
         "date": datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
         "load_before": loadavg(),
     }
@@ -207,17 +221,21 @@ def bench(args, scenes, raylab, povray, work):
     # ---- warm-up: one untimed run of each, which also makes the pictures ----
     log = os.path.join(work, "log.txt")
     for s in scenes:
-        run_timed(pov_cmd(s), log)
+        for form in args.pov_forms:
+            run_timed(pov_cmd(s, form), log)
         run_timed(ray_cmd(s, ["--png", os.path.join(work, s + "_raylab.png")]), log)
 
     # ---- timed, interleaved rounds ----
-    samples = {s: {"povray": [], "raylab": [], "povray_cpu": [], "raylab_cpu": [], "stats": []} for s in scenes}
+    runners = ["pov_" + f for f in args.pov_forms] + ["raylab"]
+    samples = {s: {k: [] for k in runners + [r + "_cpu" for r in runners] + ["stats"]} for s in scenes}
     for r in range(args.repeats):
         for i, s in enumerate(scenes):
-            order = ["povray", "raylab"] if (r + i) % 2 == 0 else ["raylab", "povray"]
+            # rotate the order of the commands between rounds and scenes
+            k = (r + i) % len(runners)
+            order = runners[k:] + runners[:k]
             for who in order:
-                if who == "povray":
-                    wall, cpu = run_timed(pov_cmd(s), log)
+                if who.startswith("pov_"):
+                    wall, cpu = run_timed(pov_cmd(s, who[4:]), log)
                 else:
                     wall, cpu = run_timed(ray_cmd(s), log)
                     with open(os.path.join(work, s + "_stats.json")) as fh:
@@ -234,13 +252,16 @@ def bench(args, scenes, raylab, povray, work):
     rows = []
     for s in scenes:
         d = samples[s]
-        pov, ray = med(d["povray"]), med(d["raylab"])
+        forms = {f: med(d["pov_" + f]) for f in args.pov_forms}
+        best = min(forms, key=forms.get)
+        pov, ray = forms[best], med(d["raylab"])
         phase = {k: med([t[k] for t in d["stats"]]) for k in ("parse", "build", "render", "write")}
         phase["other"] = ray - sum(phase.values())
-        rows.append({"scene": s, "povray_s": pov, "raylab_s": ray, "ratio": pov / ray,
-                     "povray_cpu_s": med(d["povray_cpu"]), "raylab_cpu_s": med(d["raylab_cpu"]),
+        rows.append({"scene": s, "povray_s": pov, "povray_form": best, "povray_forms_s": forms,
+                     "raylab_s": ray, "ratio": pov / ray,
+                     "povray_cpu_s": med(d["pov_%s_cpu" % best]), "raylab_cpu_s": med(d["raylab_cpu"]),
                      "raylab_phases_s": phase, "rays": d.get("rays"), "primitives": d.get("primitives"),
-                     "samples": {k: d[k] for k in ("povray", "raylab", "povray_cpu", "raylab_cpu")}})
+                     "samples": {k: v for k, v in d.items() if k != "stats"}})
 
     la, lb = machine["load_before"], machine["load_after"]
     print("machine: %s, %d logical CPUs, %.1f GiB; %s" % (machine["cpu"], machine["logical_cpus"],
@@ -250,23 +271,33 @@ def bench(args, scenes, raylab, povray, work):
     print("load average (1/5/15 min): before %.2f %.2f %.2f, after %.2f %.2f %.2f" % (la + lb))
     print("POV-Ray scene form: %s" % machine["pov_form"])
     print()
-    print("| scene | POV-Ray s | raylab s | raylab faster by | POV-Ray CPU s | raylab CPU s |"
-          " raylab parse | build | render | write | other |")
+    several = len(args.pov_forms) > 1
+    print("| scene | POV-Ray s%s | raylab s | raylab faster by | POV-Ray CPU s | raylab CPU s |"
+          " raylab parse | build | render | write | other |" % (" (fastest form)" if several else ""))
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for row in rows:
         p = row["raylab_phases_s"]
-        print("| %s | %.3f | %.3f | **%.1f×** | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |" % (
-            row["scene"], row["povray_s"], row["raylab_s"], row["ratio"], row["povray_cpu_s"],
-            row["raylab_cpu_s"], p["parse"], p["build"], p["render"], p["write"], p["other"]))
+        print("| %s | %.3f%s | %.3f | **%.1f×** | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |" % (
+            row["scene"], row["povray_s"], " (%s)" % row["povray_form"] if several else "", row["raylab_s"],
+            row["ratio"], row["povray_cpu_s"], row["raylab_cpu_s"], p["parse"], p["build"], p["render"],
+            p["write"], p["other"]))
     print()
     print("smallest ratio: %.1f× (%s)" % min((r["ratio"], r["scene"]) for r in rows))
+    if several:
+        print()
+        print("POV-Ray wall s by scene form (medians of the same rounds):")
+        print()
+        print("| scene | " + " | ".join(args.pov_forms) + " |")
+        print("|---|" + "---:|" * len(args.pov_forms))
+        for row in rows:
+            print("| %s | %s |" % (row["scene"], " | ".join("%.3f" % row["povray_forms_s"][f] for f in args.pov_forms)))
 
     if args.images:
         os.makedirs(args.images, exist_ok=True)
         print()
         for s in scenes:
             a = png_compare.read_png(os.path.join(work, s + "_raylab.png"))
-            b = png_compare.read_png(os.path.join(work, s + "_pov.png"))
+            b = png_compare.read_png(os.path.join(work, "%s_pov_%s.png" % (s, args.pov_forms[0])))
             c = png_compare.compare(a, b)
             wa, ha, ra = png_compare.downscale(*a, 2)
             _, _, rb = png_compare.downscale(*b, 2)
