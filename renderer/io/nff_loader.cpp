@@ -32,9 +32,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/triangle_mesh.h"
@@ -42,6 +42,7 @@
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/io/shape_factory.h"
 #include "renderer/io/text_file.h"
 #include "renderer/render_options.h"
 
@@ -414,13 +415,10 @@ private:
         return insideVisible ? Sidedness::Inside : Sidedness::Outside;
     }
 
+    /// Runs a geometry factory; its complaint is reported at the entity's line.
     template <class F>
     std::unique_ptr<Shape> make(F&& f) {
-        try {
-            return f();
-        } catch (const std::invalid_argument& e) {
-            failAt(m_entityLine, e.what());
-        }
+        return callFactory(m_path, m_entityLine, "", std::forward<F>(f));
     }
 
     void addShape(std::unique_ptr<Shape> shape, Sidedness s, const char* kind) {
@@ -587,11 +585,8 @@ private:
         }
         Scene s;
         s.sourcePath = m_path;
-        try {
-            s.camera = Camera::perspective(m_from, m_at, m_up, m_angle);
-        } catch (const std::invalid_argument& e) {
-            failAt(cameraErrorLine(), e.what());
-        }
+        s.camera = callFactory(m_path, cameraErrorLine(), "",
+                               [&] { return Camera::perspective(m_from, m_at, m_up, m_angle); });
         s.cameraNear = m_hither;
         s.image.width = m_width;
         s.image.sizeLine = m_sizeLine;

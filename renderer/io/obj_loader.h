@@ -1,24 +1,14 @@
 #pragma once
-// Wavefront OBJ/MTL reading through tinyobjloader, into triangle meshes and
-// Whitted materials.
-//
-// MTL -> Material mapping (MTL illumination models, Wavefront's MTL spec):
-//   ka = Ka, kd = Kd, ks = Ks, shininess = Ns, ior = Ni (1 when Ni <= 0).
-//   illum 0     colour only: ka = 0, ks = 0
-//   illum 1     diffuse only: ks = 0
-//   illum 2     diffuse + Blinn-Phong highlight
-//   illum 3..7  "reflection: ray trace on": also mirror km = Ks
-//   illum 4,6,7 transparency/refraction: kt = Tf when Tf is given and not
-//               black, else kt = 1 - d (d = dissolve; "Tr t" means d = 1 - t)
-//   other illum values are read as illum 2. Textures are ignored (warning).
+// Wavefront OBJ files (and the MTL libraries they name) as triangle meshes and
+// Whitted materials. The MTL -> Material policy is in mtl_material.h.
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "geometry/transform.h"
 #include "geometry/triangle_mesh.h"
 #include "geometry/vec.h"
 #include "shading/material.h"
@@ -26,27 +16,6 @@
 namespace raylab {
 
 struct Scene;
-
-/// Affine map p -> linear * p + translation, applied to mesh vertices on load.
-struct MeshTransform {
-    std::array<std::array<double, 3>, 3> linear{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-    Vec3 translation{0, 0, 0};
-
-    static MeshTransform translate(const Vec3& offset);
-    static MeshTransform scale(const Vec3& factors);
-    /// Right-handed rotation by `degrees` about `axis` (any non-zero length):
-    /// counter-clockwise when the axis points at the viewer (Rodrigues' formula).
-    static MeshTransform rotate(const Vec3& axis, double degrees);
-
-    /// The composition "first this, then `next`" (next ∘ this).
-    MeshTransform then(const MeshTransform& next) const;
-
-    Vec3 applyPoint(const Vec3& p) const;
-    /// Normals transform with the inverse transpose of `linear`; the result is unit length.
-    Vec3 applyNormal(const Vec3& n) const;
-    double determinant() const;
-    bool isIdentity() const;
-};
 
 /// One triangle mesh cut from an OBJ file. An OBJ file gives at most two
 /// parts: faces with vertex normals on all corners (smooth shading) and faces
@@ -67,7 +36,7 @@ struct ObjModel {
 };
 
 struct ObjLoadOptions {
-    MeshTransform transform;    ///< applied to positions (and normals) on load
+    Transform transform;        ///< applied to positions (and normals) on load
     bool printWarnings = true;  ///< print each warning as "raylab: warning: FILE: ..." to stderr
 };
 

@@ -11,8 +11,10 @@
 #include "io/io_test_helpers.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "support/vec_checks.h"
 
 using namespace raylab;
+using raylab::test::checkVec;
 using raylab::test::contains;
 using raylab::test::failureOf;
 using raylab::test::TempDir;
@@ -39,11 +41,6 @@ double hitT(const Shape& s, const Vec3& o, const Vec3& d) {
     return h ? h->t : -1;
 }
 
-void checkVec(const Vec3& a, const Vec3& b, double eps = 1e-12) {
-    CHECK(a.x == doctest::Approx(b.x).epsilon(eps));
-    CHECK(a.y == doctest::Approx(b.y).epsilon(eps));
-    CHECK(a.z == doctest::Approx(b.z).epsilon(eps));
-}
 
 }  // namespace
 

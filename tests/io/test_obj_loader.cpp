@@ -11,8 +11,10 @@
 #include "renderer/io/obj_loader.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/scene.h"
+#include "support/vec_checks.h"
 
 using namespace raylab;
+using raylab::test::checkVec;
 using raylab::test::contains;
 using raylab::test::failureOf;
 using raylab::test::TempDir;
@@ -25,11 +27,6 @@ ObjLoadOptions quiet() {
     return o;
 }
 
-void checkVec(const Vec3& a, const Vec3& b, double eps = 1e-12) {
-    CHECK(a.x == doctest::Approx(b.x).epsilon(eps));
-    CHECK(a.y == doctest::Approx(b.y).epsilon(eps));
-    CHECK(a.z == doctest::Approx(b.z).epsilon(eps));
-}
 
 bool anyWarning(const ObjModel& m, const std::string& needle) {
     for (const std::string& w : m.warnings)
@@ -316,30 +313,6 @@ TEST_CASE("obj: degenerate triangles, empty files and missing files") {
     f = failureOf([&] { loadObj(dir.file("absent.obj"), quiet()); });
     CHECK(f.file == dir.file("absent.obj"));
     CHECK(f.message == "cannot open: No such file or directory");
-}
-
-TEST_CASE("obj: MeshTransform") {
-    // 90° about +z: (1,0,0) -> (0,1,0); about +x: (0,1,0) -> (0,0,1).
-    const MeshTransform rz = MeshTransform::rotate({0, 0, 2}, 90);
-    checkVec(rz.applyPoint({1, 0, 0}), {0, 1, 0});
-    const MeshTransform rx = MeshTransform::rotate({1, 0, 0}, 90);
-    checkVec(rz.then(rx).applyPoint({1, 0, 0}), {0, 0, 1});
-    // Translation after scaling: 2 * (1,1,1) + (1,2,3).
-    const MeshTransform st =
-        MeshTransform::scale({2, 2, 2}).then(MeshTransform::translate({1, 2, 3}));
-    checkVec(st.applyPoint({1, 1, 1}), {3, 4, 5});
-    CHECK(st.determinant() == 8);
-    CHECK(!st.isIdentity());
-    CHECK(MeshTransform().isIdentity());
-    // Normals use the inverse transpose: scaling x by 2 turns the plane x + y = 0
-    // (normal (1,1,0)/√2) into x/2 + y = 0, normal ∝ (0.5, 1, 0), i.e. (1, 2, 0)/√5.
-    const MeshTransform sx = MeshTransform::scale({2, 1, 1});
-    checkVec(sx.applyNormal(normalize(Vec3(1, 1, 0))), normalize(Vec3(1, 2, 0)));
-    // A mirror keeps the normal on the side its (swapped) winding calls outside.
-    const MeshTransform mirror = MeshTransform::scale({-1, 1, 1});
-    CHECK(mirror.determinant() == -1);
-    checkVec(mirror.applyNormal({1, 0, 0}), {-1, 0, 0});
-    checkVec(mirror.applyNormal({0, 0, 1}), {0, 0, 1});
 }
 
 TEST_CASE("obj scene: camera framed on the bounds, key light and ambient") {

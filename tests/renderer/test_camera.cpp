@@ -5,16 +5,11 @@
 #include <stdexcept>
 
 #include "renderer/camera.h"
+#include "support/vec_checks.h"
 
 using namespace raylab;
+using raylab::test::checkVec;
 
-namespace {
-void checkVec(const Vec3& a, const Vec3& b, double eps = 1e-12) {
-    CHECK(a.x == doctest::Approx(b.x).epsilon(eps));
-    CHECK(a.y == doctest::Approx(b.y).epsilon(eps));
-    CHECK(a.z == doctest::Approx(b.z).epsilon(eps));
-}
-}  // namespace
 
 TEST_CASE("perspective camera: eye frame follows the lecture's u, v, w") {
     // Eye at the origin looking down -z with +y up: w = +z, u = +x, v = +y.
