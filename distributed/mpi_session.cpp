@@ -7,11 +7,7 @@
 #include <stdexcept>
 
 #if RAYLAB_HAVE_MPI
-// The C API only: Open MPI's and MPICH's deprecated C++ bindings would
-// otherwise be pulled in with their warnings.
-#define OMPI_SKIP_MPICXX 1
-#define MPICH_SKIP_MPICXX 1
-#include <mpi.h>
+#include "distributed/mpi_c_api.h"
 #endif
 
 namespace raylab {

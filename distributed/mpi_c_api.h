@@ -1,0 +1,8 @@
+#pragma once
+// <mpi.h>, its C API only: Open MPI's and MPICH's deprecated C++ bindings
+// would otherwise be pulled in with their warnings. Included only by the
+// build with MPI (RAYLAB_HAVE_MPI).
+
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
+#include <mpi.h>
