@@ -36,6 +36,9 @@ std::string mpirunRaylab(int ranks) {
 
 std::string demo() { return std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json"; }
 
+/// Every item goes to the other ranks: a fault on rank 1 cannot be outrun.
+const std::string kRootServesOnly = "RAYLAB_MPI_ROOT_RENDERS=0 ";
+
 /// The "rays" object and camera_hits of a --stats file (everything but times).
 std::string rayStats(const std::string& json) {
     const size_t a = json.find("\"rays\""), b = json.find("\"time_s\"");
@@ -161,9 +164,12 @@ TEST_CASE("mpirun cli: --frames needs a camera_path" * kWithMpirun) {
 TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is written" *
           kWithMpirun) {
     const test::TempDir dir;
-    const Run r =
-        runCommand("RAYLAB_MPI_FAULT=stall:1 RAYLAB_MPI_TIMEOUT=2 " + mpirunRaylab(2) + " render " +
-                   demo() + " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
+    // Rank 0 only serves (kRootServesOnly), so rank 1 gets the first chunk
+    // however late it starts: on a loaded machine rank 0 could otherwise render
+    // all 12 tiles before rank 1 asks, and nothing would fail.
+    const Run r = runCommand("RAYLAB_MPI_FAULT=stall:1 RAYLAB_MPI_TIMEOUT=2 " + kRootServesOnly +
+                             mpirunRaylab(2) + " render " + demo() +
+                             " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
     CHECK(r.exitCode != 0);
     CHECK_MESSAGE(r.err.find("raylab: error: rank 1 sent nothing for 2 s while holding ") !=
                       std::string::npos,
@@ -173,7 +179,8 @@ TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is writt
 
 TEST_CASE("mpirun cli: a killed rank ends the job, nothing is written" * kWithMpirun) {
     const test::TempDir dir;
-    const Run r = runCommand("RAYLAB_MPI_FAULT=kill:1 " + mpirunRaylab(2) + " render " + demo() +
+    const Run r = runCommand("RAYLAB_MPI_FAULT=kill:1 " + kRootServesOnly + mpirunRaylab(2) +
+                             " render " + demo() +
                              " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
     CHECK(r.exitCode != 0);
     // Open MPI: "... exited on signal 9 (Killed)"; MPICH: "KILLED BY SIGNAL: 9".
