@@ -19,7 +19,6 @@
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
 #include "apps/progress_bar.h"
-#include "distributed/camera_path.h"
 #include "distributed/frame_sequence.h"
 #include "distributed/mpi_render.h"
 #include "renderer/accel/accelerator.h"
@@ -223,7 +222,7 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     checkMemoryBudget(scene, options);
     // Every frame's camera is checked before the first frame renders.
     const std::optional<CameraPath> path =
-        cli.frames ? std::optional<CameraPath>(sequenceCameraPath(cli.scene, scene, *cli.frames))
+        cli.frames ? std::optional<CameraPath>(sequenceCameraPath(scene, *cli.frames))
                    : std::nullopt;
 
     t0 = Clock::now();

@@ -1,6 +1,9 @@
 #include "distributed/frame_sequence.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
 
 #include "renderer/io/errors.h"
 
@@ -40,6 +43,30 @@ std::string sequenceFileName(const std::string& path, int frame) {
     const size_t dot = path.find_last_of('.');
     if (dot == std::string::npos || dot <= nameStart) return path + number;
     return path.substr(0, dot) + number + path.substr(dot);
+}
+
+CameraPath sequenceCameraPath(const Scene& scene, const FrameRange& frames) {
+    const std::optional<CameraPath>& path = scene.cameraPath;
+    if (!path)
+        throw InputError(scene.sourcePath, 0,
+                         "--frames needs a \"camera_path\" in the scene (a .json scene; see "
+                         "docs/distributed.md)");
+    // Outside the keyframes the camera holds still: checking the covered
+    // frames and one on each side checks them all.
+    const int lo = std::max(frames.first, path->keyframes().front().frame - 1);
+    const int hi = std::min(frames.last, path->keyframes().back().frame + 1);
+    const auto check = [&](int f) {
+        try {
+            (void)path->cameraAt(f);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(scene.sourcePath, 0,
+                             "camera_path: frame " + std::to_string(f) + ": " + e.what());
+        }
+    };
+    check(frames.first);
+    check(frames.last);
+    for (int f = lo; f <= hi; ++f) check(f);
+    return *path;
 }
 
 }  // namespace raylab

@@ -1,8 +1,12 @@
 #pragma once
 // Numbered image sequences: `raylab render SCENE -o out.exr --frames 1:24`
-// writes out_0001.exr ... out_0024.exr, one frame per camera_path position.
+// writes out_0001.exr ... out_0024.exr, one frame per position of the
+// scene's camera_path.
 
 #include <string>
+
+#include "renderer/camera_path.h"
+#include "renderer/scene.h"
 
 namespace raylab {
 
@@ -14,9 +18,6 @@ struct FrameRange {
     int count() const { return last - first + 1; }
 };
 
-/// Largest frame number --frames accepts.
-constexpr int kMaxFrame = 9999999;
-
 /// Parses "A:B" or "A" (one frame) with 0 <= A <= B <= kMaxFrame.
 /// Throws UsageError naming --frames and the text otherwise.
 FrameRange parseFrameRange(const std::string& text);
@@ -25,5 +26,10 @@ FrameRange parseFrameRange(const std::string& text);
 /// the extension of the file name: ("out.exr", 7) -> "out_0007.exr",
 /// ("dir.v2/out", 12345) -> "dir.v2/out_12345".
 std::string sequenceFileName(const std::string& path, int frame);
+
+/// The scene's camera_path with the camera of every frame in `frames`
+/// checked before the first one renders. Throws InputError at the scene
+/// file when it has no camera_path or a frame's camera is degenerate.
+CameraPath sequenceCameraPath(const Scene& scene, const FrameRange& frames);
 
 }  // namespace raylab

@@ -3,8 +3,6 @@
 // pull chunks straight from the queue, and assembles the frame from the items
 // that come back, each exactly once.
 
-#include "distributed/frame_job.h"
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -16,6 +14,7 @@
 #include <vector>
 
 #include "distributed/config.h"
+#include "distributed/frame_job.h"
 #include "distributed/item_codec.h"
 #include "distributed/local_worker.h"
 #include "distributed/protocol.h"

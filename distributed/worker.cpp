@@ -3,8 +3,6 @@
 // finished items back byte for byte, and keep rank 0 informed (heartbeats)
 // while a long chunk renders.
 
-#include "distributed/frame_job.h"
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -15,6 +13,7 @@
 #include <vector>
 
 #include "distributed/config.h"
+#include "distributed/frame_job.h"
 #include "distributed/item_codec.h"
 #include "distributed/local_worker.h"
 #include "distributed/protocol.h"

@@ -4,12 +4,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/shape.h"
 #include "renderer/accel/hit.h"
 #include "renderer/camera.h"
+#include "renderer/camera_path.h"
 #include "renderer/render_overrides.h"
 #include "shading/color.h"
 #include "shading/light.h"
@@ -51,6 +53,7 @@ struct SurfaceInteraction : SurfaceGeometry {
 struct Scene {
     std::string sourcePath;  ///< file the scene came from (for messages)
     Camera camera;
+    std::optional<CameraPath> cameraPath;  ///< JSON "camera_path": the cameras of --frames
     double cameraNear = 0;   ///< camera rays start at this distance from the eye (NFF hither)
     ImageSettings image;
     RenderOverrides settings;  ///< the scene file's "render" block (accuracy knobs)

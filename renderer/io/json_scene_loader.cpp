@@ -12,6 +12,7 @@
 #include "geometry/triangle_mesh.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
+#include "renderer/io/json_camera_path.h"
 #include "renderer/io/json_fields.h"
 #include "renderer/io/json_shapes.h"
 #include "renderer/io/obj_loader.h"
@@ -39,6 +40,7 @@ private:
     void readImage(const JsonValue& v, const std::string& path);
     void readRenderSettings(const JsonValue& v, const std::string& path);
     void readCamera(const JsonValue& v, const std::string& path);
+    void readCameraPath(const JsonValue& v);
     void readLights(const JsonValue& v, const std::string& path);
     Light readLight(const JsonValue& v, const std::string& path);
     void readMaterials(const JsonValue& v, const std::string& path);
@@ -73,7 +75,6 @@ Scene SceneReader::read(const JsonValue& root) {
              std::string("a scene file must be a JSON object ({...}), got ") + root.typeName());
     const JsonFields top(
         *this, root, "", "a scene",
-        // "camera_path" (--frames sequences) is read by distributed/camera_path.cpp.
         {"image", "render", "camera", "background", "ambient", "lights", "materials", "objects",
          "camera_path"});
     if (const JsonValue* v = top.get("image")) readImage(*v, "image");
@@ -85,6 +86,8 @@ Scene SceneReader::read(const JsonValue& root) {
     if (const JsonValue* v = top.get("materials")) readMaterials(*v, "materials");
     if (const JsonValue* v = top.get("lights")) readLights(*v, "lights");
     readObjects(top.need("objects"), "objects");
+    // After everything else: an error elsewhere in the scene is still reported first.
+    if (const JsonValue* v = top.get("camera_path")) readCameraPath(*v);
     return std::move(m_scene);
 }
 
@@ -170,6 +173,14 @@ void SceneReader::readCamera(const JsonValue& v, const std::string& path) {
     // Camera rays start this far from the eye (NFF's "hither").
     if (const JsonValue* n = v.find("near"))
         m_scene.cameraNear = nonNegative(*n, memberPath(path, "near"));
+}
+
+void SceneReader::readCameraPath(const JsonValue& v) {
+    // Keyframes without "fov" keep the scene camera's.
+    const double fov = m_scene.camera.projection() == Camera::Projection::Perspective
+                           ? m_scene.camera.vfovDegrees()
+                           : 45.0;
+    m_scene.cameraPath = parseCameraPath(v, file(), fov);
 }
 
 // ---------------------------------------------------------------------------

@@ -5,10 +5,11 @@
 #include <cmath>
 #include <string>
 
-#include "distributed/camera_path.h"
 #include "distributed/frame_sequence.h"
+#include "renderer/camera_path.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
+#include "renderer/io/json_camera_path.h"
 
 using namespace raylab;
 

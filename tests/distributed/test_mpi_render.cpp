@@ -14,9 +14,9 @@
 #include <string>
 
 #include "distributed_test_helpers.h"
-#include "distributed/camera_path.h"
 #include "distributed/mpi_render.h"
 #include "distributed/mpi_session.h"
+#include "renderer/camera_path.h"
 
 using namespace raylab;
 

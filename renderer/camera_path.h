@@ -1,6 +1,7 @@
 #pragma once
 // A keyframed camera for image sequences: the scene file's "camera_path"
-// (docs/distributed.md), interpolated per frame.
+// (docs/distributed.md), interpolated per frame. The JSON reader fills it in
+// (io/json_camera_path.h); --frames renders along it.
 //
 //   "camera_path": {
 //       "interpolation": "catmull_rom",          // or "linear" (default catmull_rom)
@@ -10,17 +11,15 @@
 //       ]
 //   }
 
-#include <optional>
-#include <string>
 #include <vector>
 
 #include "geometry/vec.h"
 #include "renderer/camera.h"
-#include "distributed/frame_sequence.h"
-#include "renderer/io/json.h"
-#include "renderer/scene.h"
 
 namespace raylab {
+
+/// Largest frame number of a keyframe and of --frames.
+constexpr int kMaxFrame = 9999999;
 
 /// One keyframe of a perspective camera.
 struct CameraKeyframe {
@@ -60,22 +59,5 @@ private:
     std::vector<CameraKeyframe> m_keys;
     Interpolation m_interpolation;
 };
-
-/// Reads a "camera_path" value. Keyframes without "fov" get `defaultFov`.
-/// Throws InputError(file, line, "camera_path.keyframes[1].frame: ...") on
-/// unknown keys, wrong types, frames not strictly increasing, and keyframes
-/// whose camera is degenerate.
-CameraPath parseCameraPath(const JsonValue& value, const std::string& file, double defaultFov);
-
-/// The "camera_path" of the scene file `scenePath` (read again: the scene
-/// loader skips the key), or nullopt when the file is not .json or has none.
-/// Keyframes without "fov" take the scene camera's.
-std::optional<CameraPath> loadCameraPath(const std::string& scenePath, const Scene& scene);
-
-/// The scene's camera_path with the camera of every frame in `frames`
-/// checked before the first one renders. Throws InputError when the scene
-/// has no camera_path or a frame's camera is degenerate.
-CameraPath sequenceCameraPath(const std::string& scenePath, const Scene& scene,
-                              const FrameRange& frames);
 
 }  // namespace raylab
