@@ -11,11 +11,14 @@ namespace raylab {
 class InputError : public std::runtime_error {
 public:
     InputError(std::string file, int line, const std::string& message)
-        : std::runtime_error(message), m_file(std::move(file)), m_line(line) {}
+        : std::runtime_error(message), m_file(std::move(file)), m_line(line), m_message(message) {}
     explicit InputError(const std::string& message) : InputError("", 0, message) {}
 
     const std::string& file() const { return m_file; }
     int line() const { return m_line; }  ///< 0 when no line applies
+    /// The whole message: what() is a C string and ends at a NUL byte that
+    /// the input put there (a JSON "\u0000"), this does not.
+    const std::string& message() const { return m_message; }
 
     /// "FILE:LINE: message", "FILE: message" or "message".
     std::string located() const {
@@ -23,12 +26,13 @@ public:
         if (!m_file.empty()) s += m_file + ":";
         if (m_line > 0) s += std::to_string(m_line) + ":";
         if (!s.empty()) s += " ";
-        return s + what();
+        return s + m_message;
     }
 
 private:
     std::string m_file;
     int m_line = 0;
+    std::string m_message;
 };
 
 /// Makes text that may quote user input safe for a one-line terminal message:
@@ -58,7 +62,13 @@ inline std::string terminalSafe(const std::string& text, size_t maxLength = 300)
 /// Bad command-line usage: exit code 2.
 class UsageError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit UsageError(const std::string& message)
+        : std::runtime_error(message), m_message(message) {}
+    /// The whole message, NUL bytes included (see InputError::message).
+    const std::string& message() const { return m_message; }
+
+private:
+    std::string m_message;
 };
 
 }  // namespace raylab
