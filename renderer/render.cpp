@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/random.h"
+#include "renderer/cancel.h"
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
 #include "renderer/timing.h"
@@ -198,7 +199,7 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         // SPD procedure: one eye ray through every pixel corner, (W+1)·(H+1)
         // rays; a work item is one row of corners.
         const int cw = m_options.width + 1;
-        for (int i = r.x0; i < r.x1; ++i)
+        for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i)
             buffers.corners[size_t(r.y0) * cw + i] =
                 traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
         return;
@@ -206,7 +207,7 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
     if (m_options.adaptiveThreshold > 0) {
         AdaptiveTile tile(*m_integrator, m_scene, m_options, r, counters);
         for (int y = r.y0; y < r.y1; ++y) {
-            for (int x = r.x0; x < r.x1; ++x) {
+            for (int x = r.x0; x < r.x1 && !cancelRequested(); ++x) {
                 double coverage = 0;
                 FirstHit first;
                 const Color c = tile.pixel(x, y, coverage, first);
@@ -218,7 +219,7 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         return;
     }
     for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x)
+        for (int x = r.x0; x < r.x1 && !cancelRequested(); ++x)  // a stop cuts the tile short
             renderPixel(*m_integrator, m_scene, m_options, buffers.film, x, y, counters);
 }
 
@@ -273,7 +274,8 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
             }
         },
         tbb::simple_partitioner());
-    result.cancelled = cancel && cancel->load();
+    // A stop request also cuts tiles short (per pixel), whatever `cancel` is.
+    result.cancelled = (cancel && cancel->load()) || cancelRequested();
     if (!result.cancelled) frame.finish(buffers);
     result.renderSeconds =
         secondsSince(start);

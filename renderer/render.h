@@ -80,7 +80,8 @@ struct RenderResult {
 
 /// Renders the scene. Deterministic: the film and the counters are
 /// bit-identical for any thread count. `cancel` (may be null) stops the render
-/// promptly between tiles; the result then has cancelled = true.
+/// promptly between tiles, and the process-wide stop request (cancel.h)
+/// between pixels; the result then has cancelled = true.
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const EffectSet& effects, const ProgressCallback& progress = {},
                     const std::atomic<bool>* cancel = nullptr);

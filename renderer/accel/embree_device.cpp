@@ -1,5 +1,7 @@
 #include "renderer/accel/embree_device.h"
 
+#include "renderer/accel/build_cancel.h"
+
 #include <algorithm>
 #include <cctype>
 #include <sstream>
@@ -80,7 +82,9 @@ void EmbreeDevice::check(const char* what) const {
     if (!error.empty()) throw std::runtime_error("embree: " + error + " (during " + what + ")");
 }
 
-EmbreeScene::EmbreeScene(const EmbreeDevice& device) : m_scene(rtcNewScene(device.get())) {}
+EmbreeScene::EmbreeScene(const EmbreeDevice& device) : m_scene(rtcNewScene(device.get())) {
+    if (m_scene) cancelBuildOnRequest(m_scene);  // a stop request ends the build
+}
 
 EmbreeScene::~EmbreeScene() {
     if (m_scene) rtcReleaseScene(m_scene);
