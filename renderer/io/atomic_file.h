@@ -13,10 +13,20 @@ namespace raylab {
 /// statistics either all appear or none is touched.
 ///
 /// write() fills a temporary beside each target (as writeFileAtomically
-/// does); commit() renames them all, in the order written. A group destroyed
-/// before commit() (a later write failed, an exception) removes every
-/// temporary and leaves every target as it was. The renames themselves stay
-/// within each target's directory, where they do not fail in practice.
+/// does) and flushes it to disk (fsync). commit() then
+///  1. stops at once, touching nothing, when a stop was requested (cancel.h);
+///  2. keeps every existing target aside under a hard link beside it (a copy
+///     where hard links are refused) and gives the new file its permission bits;
+///  3. renames the temporaries over the targets, in the order written;
+///  4. when a rename fails, or a stop arrives during the renames, puts the
+///     targets already replaced back (renames the kept files back, removes
+///     the ones that did not exist) and throws;
+///  5. otherwise syncs the directories and removes the kept files.
+/// What POSIX does not allow: the group is not one atomic step for an
+/// observer (another process can see the first file replaced before the
+/// second), a restore can itself fail (the message then names the kept file),
+/// and the owner and group of a replaced file become this process's.
+/// A group destroyed before commit() removes every temporary.
 class AtomicFileGroup {
 public:
     AtomicFileGroup() = default;
@@ -26,10 +36,13 @@ public:
 
     /// \throws InputError(path, 0, reason) like writeFileAtomically; files
     ///         written before stay staged until commit() or destruction.
+    /// \throws Cancelled when a stop was requested (the temporary is removed).
     void write(const std::string& path,
                const std::function<void(const std::string& tmpPath)>& writer);
-    /// \throws InputError(path, 0, reason) when a rename fails; the
-    ///         temporaries not yet renamed are removed.
+    /// \throws InputError(path, 0, reason) when a target cannot be kept aside
+    ///         or a rename fails: every target is then as it was (or the
+    ///         message says which could not be restored), no temporary is left.
+    /// \throws Cancelled when a stop was requested before or during the renames.
     void commit();
 
     /// One staged file (public for the helpers in atomic_file.cpp).
@@ -39,14 +52,29 @@ public:
     };
 
 private:
+    /// A target and the name its old content was kept under ("" when it was new).
+    struct Replacement {
+        std::string target, backup;
+    };
+    /// Undoes the first `renamed` replacements of `plan` and removes the kept
+    /// files of the others; returns "" or what could not be undone.
+    static std::string rollBack(const std::vector<Replacement>& plan, size_t renamed) noexcept;
     void discard() noexcept;
     std::vector<Staged> m_staged;
 };
 
+/// \brief The file that writing `path` replaces: `path` itself, or the file a
+/// symbolic link at `path` points to (followed up to 40 times, relative links
+/// against the link's directory; the link stays a link).
+/// \throws InputError(path, 0, ...) when it is a directory, a device, FIFO or
+///         socket (renaming over it would replace the node itself), or a loop.
+std::string resolveOutputTarget(const std::string& path);
+
 /// \brief Writes `path` atomically.
 ///
-/// Creates "<path>.tmp.<pid>.<n>" in the same directory (so the final rename
-/// never crosses a file system), calls `writer(tmpPath)` to fill it, then
+/// Creates "<name>.tmp.<pid>.<n>" in the same directory (so the final rename
+/// never crosses a file system; a name over 200 bytes is cut there, so the
+/// temporary's name stays within NAME_MAX), calls `writer(tmpPath)` to fill it, then
 /// renames it over `path`. A symbolic link is followed: the file it points to
 /// is replaced and the link stays. A `path` that names a directory, device,
 /// FIFO or socket is refused before anything is written (renaming over it

@@ -1,6 +1,9 @@
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "renderer/io/atomic_file.h"
@@ -155,19 +158,72 @@ TEST_CASE("atomic file group: a failed later write leaves every earlier target u
     CHECK(inFlightTempFileCount() == 0);
 }
 
-TEST_CASE("atomic file group: a failed rename removes the remaining temporaries") {
+TEST_CASE("atomic file group: a target that changed kind during the render stops the whole commit") {
     TempDir dir;
+    writeFileAtomically(dir.file("third.txt"), std::string("old 3"));
     AtomicFileGroup group;
     writeFileAtomically(dir.file("first.txt"), std::string("1"), &group);
     writeFileAtomically(dir.file("second"), std::string("2"), &group);
     writeFileAtomically(dir.file("third.txt"), std::string("3"), &group);
     // Something else takes the second name meanwhile: rename(2) cannot
-    // replace a non-empty directory.
+    // replace a non-empty directory, so nothing is renamed at all.
     std::filesystem::create_directories(dir.file("second/child"));
-    CHECK_THROWS_AS(group.commit(), InputError);
-    CHECK(readFile(dir.file("first.txt")) == "1");  // renamed before the failure
-    CHECK(dir.entries() == std::vector<std::string>{"first.txt", "second"});
+    try {
+        group.commit();
+        FAIL("expected InputError");
+    } catch (const InputError& e) {
+        CHECK(e.file() == dir.file("second"));
+        CHECK(e.message().find("no longer a regular file") != std::string::npos);
+    }
+    CHECK(readFile(dir.file("third.txt")) == "old 3");
+    CHECK(dir.entries() == std::vector<std::string>{"second", "third.txt"});
     CHECK(inFlightTempFileCount() == 0);
+}
+
+TEST_CASE("atomic file: a replaced file keeps its permission bits, a new one gets the umask's") {
+    TempDir dir;
+    const std::string target = dir.file("private.json");
+    writeFileAtomically(target, std::string("old"));
+    REQUIRE(::chmod(target.c_str(), 0600) == 0);
+    writeFileAtomically(target, std::string("new"));
+    struct stat st {};
+    REQUIRE(::stat(target.c_str(), &st) == 0);
+    CHECK((st.st_mode & 07777) == 0600);
+    CHECK(readFile(target) == "new");
+    REQUIRE(::chmod(target.c_str(), 0444) == 0);  // read-only: replaced all the same
+    writeFileAtomically(target, std::string("newer"));
+    REQUIRE(::stat(target.c_str(), &st) == 0);
+    CHECK((st.st_mode & 07777) == 0444);
+    CHECK(dir.entries() == std::vector<std::string>{"private.json"});  // no kept copy left
+}
+
+TEST_CASE("atomic file: a legal 255-byte output name works, temporaries stay within NAME_MAX") {
+    TempDir dir;
+    const std::string name = std::string(251, 'n') + ".exr";
+    REQUIRE(name.size() == 255);
+    const std::string target = dir.file(name);
+    std::string seen;
+    writeFileAtomically(target, [&](const std::string& tmp) {
+        seen = tmp;
+        std::ofstream(tmp) << "first";
+    });
+    CHECK(std::filesystem::path(seen).filename().string().size() <= 255);
+    writeFileAtomically(target, std::string("second"));  // replacing: a kept copy beside it too
+    CHECK(readFile(target) == "second");
+    CHECK(dir.entries() == std::vector<std::string>{name});
+    // A multi-byte UTF-8 name is never cut inside a character.
+    std::string utf8;
+    for (int i = 0; i < 75; ++i) utf8 += "\xC3\xA9";  // 'e' with acute, 150 bytes
+    const std::string accented = dir.file(std::string(101, 'a') + utf8 + ".png");
+    writeFileAtomically(accented, [&](const std::string& tmp) {
+        const std::string base = std::filesystem::path(tmp).filename().string();
+        const size_t stem = base.find(".tmp.");
+        REQUIRE(stem != std::string::npos);
+        CHECK(stem <= 200);
+        CHECK((static_cast<unsigned char>(base[stem - 1]) & 0xC0) != 0xC0);  // not a lead byte cut off
+        std::ofstream(tmp) << "x";
+    });
+    CHECK(readFile(accented) == "x");
 }
 
 TEST_CASE("atomic file: checkWritable refuses missing folders and directories, touches nothing") {
