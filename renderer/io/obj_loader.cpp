@@ -13,6 +13,7 @@
 
 #include "renderer/io/errors.h"
 #include "renderer/io/load_warnings.h"
+#include "renderer/io/loading_file.h"
 #include "renderer/io/mtl_material.h"
 #include "renderer/io/mtl_reader.h"
 #include "renderer/io/obj_scan.h"
@@ -57,6 +58,7 @@ struct PartBuilder {
 }  // namespace
 
 ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
+    const LoadingFile loading(path);  // names this file if the parse runs out of memory
     const std::string text = readTextFile(path);
     // tinyobjloader reads a NUL as the end of a line and UTF-16 as no statements.
     if (const auto [line, message] = findNonText(text, "OBJ"); line > 0)

@@ -3,12 +3,14 @@
 #include <cmath>
 
 #include "renderer/io/errors.h"
+#include "renderer/io/loading_file.h"
 #include "renderer/io/obj_loader.h"
 #include "renderer/io/text_file.h"
 
 namespace raylab {
 
 Scene loadScene(const std::string& path) {
+    const LoadingFile loading(path);  // names the scene if its parse runs out of memory
     const std::string ext = lowerExtension(path);
     if (ext == ".json") return loadJsonScene(readTextFile(path), path);
     if (ext == ".obj") return loadObjScene(path);

@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <cstring>
 
+#include "renderer/cancel.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/input_files.h"
 
 namespace raylab {
 
@@ -37,11 +39,14 @@ std::string readTextFile(const std::string& path, size_t maxBytes) {
                                        mib(double(maxBytes)) + " MiB a scene file may have");
     };
     if (uint64_t(st.st_size) > maxBytes) throw tooLarge(double(st.st_size));
+    // Recorded before reading: an output must never name a file the run reads.
+    recordInputFile(path, st);
 
     std::string text;
     text.reserve(size_t(st.st_size));
     char buffer[1 << 16];
     while (true) {
+        throwIfCancelled();  // a 1 GiB file on a slow disk is a phase of its own
         const ssize_t n = ::read(fd, buffer, sizeof buffer);
         if (n == 0) break;
         if (n < 0) {

@@ -17,7 +17,9 @@ constexpr size_t kMaxTextFileBytes = size_t(1) << 30;
 /// missing, unreadable, a directory or not a regular file (a device such as
 /// /dev/zero, a FIFO, a socket: never opened blocking, never read without
 /// end), "file is N MiB, larger than ..." beyond `maxBytes`, and
-/// "read error: <reason>" when reading fails midway.
+/// "read error: <reason>" when reading fails midway. The file is recorded as
+/// an input of the run (input_files.h); Cancelled is thrown between chunks
+/// once a stop was requested (cancel.h).
 std::string readTextFile(const std::string& path, size_t maxBytes = kMaxTextFileBytes);
 
 /// Where a file that should be text is not: {1, "..."} for a UTF-16

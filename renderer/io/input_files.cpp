@@ -1,0 +1,44 @@
+#include "renderer/io/input_files.h"
+
+
+namespace raylab {
+
+namespace {
+
+std::mutex g_logsMutex;       // guards g_current against logs opening and closing
+InputFileLog* g_current = nullptr;
+
+}  // namespace
+
+InputFileLog::InputFileLog() {
+    std::lock_guard<std::mutex> lock(g_logsMutex);
+    m_outer = g_current;
+    g_current = this;
+}
+
+InputFileLog::~InputFileLog() {
+    std::lock_guard<std::mutex> lock(g_logsMutex);
+    g_current = m_outer;
+}
+
+std::vector<InputFile> InputFileLog::files() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_files;
+}
+
+void InputFileLog::add(const std::string& path, const FileKey& key) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_seen.insert(key).second) m_files.push_back({path, key});
+}
+
+void recordInputFile(const std::string& path, const struct stat& st) {
+    std::lock_guard<std::mutex> lock(g_logsMutex);
+    if (g_current) g_current->add(path, fileKeyOf(st));
+}
+
+void recordInputFile(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) recordInputFile(path, st);
+}
+
+}  // namespace raylab

@@ -1,0 +1,54 @@
+#pragma once
+// The files a run reads. Every input goes through one of two hooks:
+// readTextFile (scenes, meshes, MTL libraries, camera paths) records what it
+// opened by the identity of the open descriptor, and a binary reader (a
+// texture, say) calls recordInputFile before reading. The render command
+// then refuses any output that is one of these files.
+
+#include <sys/stat.h>
+
+#include <mutex>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "renderer/io/file_identity.h"
+
+namespace raylab {
+
+struct InputFile {
+    std::string path;  ///< as it was opened
+    FileKey key;
+};
+
+/// \brief While alive, collects every input file read in this process (any
+/// thread). Logs nest: only the innermost one records.
+class InputFileLog {
+public:
+    InputFileLog();
+    ~InputFileLog();
+    InputFileLog(const InputFileLog&) = delete;
+    InputFileLog& operator=(const InputFileLog&) = delete;
+
+    /// Each file once (by identity), in the order first read.
+    std::vector<InputFile> files() const;
+
+    void add(const std::string& path, const FileKey& key);
+
+private:
+    mutable std::mutex m_mutex;
+    std::vector<InputFile> m_files;
+    std::unordered_set<FileKey, FileKeyHash> m_seen;
+    InputFileLog* m_outer;
+};
+
+/// Records an input opened as a descriptor, from its fstat data (so the file
+/// recorded is exactly the one read, whatever its path resolves to later).
+void recordInputFile(const std::string& path, const struct stat& st);
+
+/// Records an input by path (stat follows links); for readers that open files
+/// themselves, called before they read. A path that cannot be stat'ed is not
+/// recorded: the reader's own open will fail and report it.
+void recordInputFile(const std::string& path);
+
+}  // namespace raylab
