@@ -6,12 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "renderer/cancel.h"
+
 namespace raylab {
 
-/// Set by the SIGINT handler; long-running commands poll it.
-extern std::atomic<bool> g_interrupted;
+/// Set by the SIGINT, SIGTERM and SIGHUP handlers (apps/signals.h); long-running
+/// commands poll it. The process-wide stop request of renderer/cancel.h.
+inline std::atomic<bool>& g_interrupted = g_cancelRequested;
 
-int renderCommand(const std::vector<std::string>& args, const std::string& commandLine);
+int renderCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);
 int accuracyCommand(const std::vector<std::string>& args);
 int compareCommand(const std::vector<std::string>& args);

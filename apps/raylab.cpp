@@ -13,12 +13,11 @@
 #include <vector>
 
 #include "apps/commands.h"
-#include "renderer/io/atomic_file.h"
+#include "apps/signals.h"
+#include "renderer/cancel.h"
 #include "renderer/io/errors.h"
 
 namespace raylab {
-
-std::atomic<bool> g_interrupted{false};
 
 namespace {
 
@@ -35,32 +34,11 @@ const char* const kMainHelp =
     "  compare A.exr B.exr                 how far apart two renders are (RMSE, PSNR, identical pixels)\n"
     "\n"
     "Run 'raylab <command> --help' for the options of a command.\n"
-    "Exit codes: 0 success, 1 bad input (scene, mesh, file), 2 bad usage, 130 interrupted.\n";
+    "Exit codes: 0 success, 1 bad input (scene, mesh, file), 2 bad usage,\n"
+    "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP).\n";
 
-extern "C" void onInterrupt(int) {
-    // First Ctrl-C: ask the render to stop between tiles. Second: leave now,
-    // removing any half-written output first (async-signal-safe calls only).
-    if (g_interrupted.exchange(true)) {
-        removeInFlightTempFiles();
-        _exit(130);
-    }
-}
-
-}  // namespace
-}  // namespace raylab
-
-int main(int argc, char** argv) {
-    using namespace raylab;
-    // Embree wants flush-to-zero and denormals-are-zero on every thread; set
-    // before TBB starts its workers, which inherit the MXCSR.
-    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    std::signal(SIGINT, onInterrupt);
-
-    std::vector<std::string> args(argv + 1, argv + argc);
-    std::string commandLine = "raylab";
-    for (const std::string& a : args) commandLine += " " + a;
-
+/// Runs the command; every way out of it but a forced exit goes through here.
+int run(const std::vector<std::string>& args) {
     try {
         if (args.empty()) {
             std::fputs(kMainHelp, stderr);
@@ -76,14 +54,21 @@ int main(int argc, char** argv) {
             std::puts("raylab 0.1.0");
             return 0;
         }
-        if (command == "render") return renderCommand(rest, commandLine);
-        if (command == "bench") return benchCommand(rest);
-        if (command == "accuracy") return accuracyCommand(rest);
-        if (command == "compare") return compareCommand(rest);
-        throw UsageError("unknown command '" + command +
-                         "' (expected render, bench, accuracy or compare)");
+        int code = 0;
+        if (command == "render") code = renderCommand(rest);
+        else if (command == "bench") code = benchCommand(rest);
+        else if (command == "accuracy") code = accuracyCommand(rest);
+        else if (command == "compare") code = compareCommand(rest);
+        else
+            throw UsageError("unknown command '" + command +
+                             "' (expected render, bench, accuracy or compare)");
+        // Commands that stop on the flag themselves return 130 whatever the signal.
+        if (code == 130 && cancelSignal() != 0) code = 128 + cancelSignal();
+        return code;
+    } catch (const Cancelled&) {
+        return reportInterrupted();
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.what()).c_str());
+        std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.message()).c_str());
         return 2;
     } catch (const InputError& e) {
         std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.located()).c_str());
@@ -95,4 +80,19 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(e.what()).c_str());
         return 1;
     }
+}
+
+}  // namespace
+}  // namespace raylab
+
+int main(int argc, char** argv) {
+    using namespace raylab;
+    // Embree wants flush-to-zero and denormals-are-zero on every thread; set
+    // before TBB starts its workers, which inherit the MXCSR.
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    installSignalHandling();
+    const int code = run(std::vector<std::string>(argv + 1, argv + argc));
+    claimExit();  // from here on the watchdog neither prints nor exits
+    return code;
 }

@@ -1,8 +1,10 @@
 // raylab render: load → build → render → write.
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cctype>
+#include <csignal>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -19,15 +21,23 @@
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
 #include "apps/progress_bar.h"
+#include "apps/run_phase.h"
+#include "apps/signals.h"
 #include "distributed/frame_sequence.h"
 #include "distributed/mpi_render.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/cancel.h"
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_writer.h"
+#include "renderer/io/file_identity.h"
+#include "renderer/io/input_files.h"
+#include "renderer/io/loading_file.h"
+#include "renderer/io/output_names.h"
 #include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/memory_limit.h"
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
@@ -106,15 +116,49 @@ bool hasExtension(const std::string& path, const std::string& ext) {
     return true;
 }
 
-/// Whether two paths name one file (through "..", "." and symbolic links),
-/// whether or not it exists yet.
-bool sameFile(const std::string& a, const std::string& b) {
-    std::error_code ea, eb;
-    const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ea);
-    const std::filesystem::path cb = std::filesystem::weakly_canonical(b, eb);
-    if (ea || eb) return std::filesystem::absolute(a, ea).lexically_normal() ==
-                         std::filesystem::absolute(b, eb).lexically_normal();
-    return ca == cb;
+/// The output flags of a render, for checkOutputNames.
+std::vector<OutputFlag> outputFlags(const RenderCli& cli) {
+    return {{"-o", cli.exr}, {"--png", cli.png}, {"--stats", cli.stats}};
+}
+
+/// Refuses outputs that name one another or a file the render reads (all of
+/// them once loaded; the scene alone before, so that mistake costs no load).
+void checkOutputs(const RenderCli& cli, const std::vector<InputFile>& inputs) {
+    const OutputFrames numbering{cli.frames ? cli.frames->first : 1,
+                                 cli.frames ? cli.frames->last : 1, sequenceFileName};
+    checkOutputNames(outputFlags(cli), cli.frames ? &numbering : nullptr, inputs);
+}
+
+/// The command recorded in the EXR header: what defines the image, without
+/// what does not (output names, --threads, --quiet, the PNG's --exposure), so
+/// that the same render writes the same bytes however it is run.
+std::string imageCommand(const std::vector<std::string>& args) {
+    std::string command = "raylab render";
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "-o" || a == "--output" || a == "--png" || a == "--stats" || a == "--threads" ||
+            a == "--exposure") {
+            ++i;  // and its value
+            continue;
+        }
+        if (a == "--quiet" || a == "-q") continue;
+        command += " " + a;
+    }
+    return command;
+}
+
+/// loadScene, with an out-of-memory failure reported at the file being read.
+Scene loadSceneNamingFile(const std::string& path) {
+    try {
+        return loadScene(path);
+    } catch (const std::bad_alloc&) {
+        const std::string file = fileBeingLoaded().empty() ? path : fileBeingLoaded();
+        std::string limit;
+        if (const std::optional<MemoryLimit> l = tightestMemoryLimit(readMemoryFacts()))
+            limit = " (at most " + std::to_string((long long)(l->bytes / (1 << 20))) +
+                    " MiB allowed by " + l->source + ")";
+        throw InputError(file, 0, "out of memory while loading this file" + limit);
+    }
 }
 
 RenderCli parseRenderArgs(const std::vector<std::string>& args) {
@@ -161,14 +205,10 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
     if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
     // Two names for one file would make one output overwrite another, or the scene.
-    const std::pair<const char*, const std::string*> names[] = {
-        {"the scene", &cli.scene}, {"-o", &cli.exr}, {"--png", &cli.png}, {"--stats", &cli.stats}};
-    for (size_t i = 0; i < std::size(names); ++i)
-        for (size_t j = i + 1; j < std::size(names); ++j)
-            if (!names[i].second->empty() && !names[j].second->empty() &&
-                sameFile(*names[i].second, *names[j].second))
-                throw UsageError(std::string(names[j].first) + " names the same file as " +
-                                 names[i].first + " ('" + *names[j].second + "')");
+    std::vector<InputFile> scene;
+    struct stat st {};
+    if (::stat(cli.scene.c_str(), &st) == 0) scene.push_back({cli.scene, fileKeyOf(st)});
+    checkOutputs(cli, scene);
     // A PNG or anything else named .exr (or the reverse) is a typing mistake
     // that would only show up when another program opens the file.
     if (!hasExtension(cli.exr, ".exr"))
@@ -199,7 +239,8 @@ void printSummary(const RenderStats& s, const std::string& exr, const std::strin
 
 }  // namespace
 
-int renderCommand(const std::vector<std::string>& args, const std::string& commandLine) {
+int renderCommand(const std::vector<std::string>& args) {
+    enterPhase(Phase::Parse);
     const RenderCli cli = parseRenderArgs(args);
     using Clock = std::chrono::steady_clock;
     // Under mpirun every rank runs this function: MPI starts here (never in
@@ -207,7 +248,8 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     const MpiSession mpi;
 
     auto t0 = Clock::now();
-    Scene scene = loadScene(cli.scene);
+    const InputFileLog inputs;  // every file read from here on (input_files.h)
+    Scene scene = loadSceneNamingFile(cli.scene);
     if (cli.triangulatePolygons) triangulatePolygons(scene);
     RenderStats stats;
     stats.parseSeconds = secondsSince(t0);
@@ -224,32 +266,42 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
     const std::optional<CameraPath> path =
         cli.frames ? std::optional<CameraPath>(sequenceCameraPath(scene, *cli.frames))
                    : std::nullopt;
+    throwIfCancelled();
 
+    const FrameRange frames = cli.frames.value_or(FrameRange{});
+    // No output may be a file just read (a mesh, an MTL library, a numbered
+    // frame name equal to the scene's), and one that cannot be written fails
+    // now, not after a long render.
+    checkOutputs(cli, inputs.files());
+    if (mpi.isRoot()) {
+        for (const std::string& file : {cli.exr, cli.png, cli.stats})
+            if (!file.empty())
+                checkWritable(cli.frames ? sequenceFileName(file, frames.first) : file);
+    }
+
+    enterPhase(Phase::Build);
     t0 = Clock::now();
     // Geometry the accelerator cannot take (beyond float range relative to
     // the eye) is a problem of the scene file: report it as such.
     std::unique_ptr<Accelerator> accel;
     try {
         accel = makeAccelerator(options.accel, scene, options.accelOptions);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(cli.scene, 0, e.what());
+    } catch (const std::exception& e) {
+        throwIfCancelled();  // a cancelled Embree build reports RTC_ERROR_CANCELLED
+        if (dynamic_cast<const std::invalid_argument*>(&e)) throw InputError(cli.scene, 0, e.what());
+        throw;
     }
+    throwIfCancelled();
     stats.buildSeconds = secondsSince(t0);
 
     const EffectSet effects = analyseEffects(scene, options);
-    const FrameRange frames = cli.frames.value_or(FrameRange{});
-    // An output that cannot be written fails now, not after a long render.
-    if (mpi.isRoot()) {
-        for (const std::string& file : {cli.exr, cli.png, cli.stats})
-            if (!file.empty())
-                checkWritable(cli.frames ? sequenceFileName(file, frames.first) : file);
-    }
     for (int frame = frames.first; frame <= frames.last; ++frame) {
         // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
         const auto output = [&](const std::string& file) {
             return cli.frames && !file.empty() ? sequenceFileName(file, frame) : file;
         };
         if (path) scene.camera = path->cameraAt(frame);
+        enterPhase(Phase::Render);
         ProgressBar bar(cli.frames ? "frame " + std::to_string(frame) : "rendering",
                         !cli.quiet && mpi.isRoot() && isatty(STDERR_FILENO));
         DistributedReport report;
@@ -258,10 +310,8 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
                                                 &report);
         bar.finish();
         if (result.cancelled) {
-            if (mpi.isRoot())
-                std::fprintf(stderr, "raylab: interrupted: no output written%s\n",
-                             frame > frames.first ? " for this and later frames" : "");
-            return 130;
+            if (mpi.isRoot()) return reportInterrupted();
+            return 128 + (cancelSignal() ? cancelSignal() : SIGINT);
         }
         if (!mpi.isRoot()) continue;  // the other ranks only render
 
@@ -277,10 +327,11 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
         stats.maxDepth = options.maxDepth;
         stats.nonFiniteSamples = result.nonFiniteSamples;
 
+        enterPhase(Phase::Write);
         t0 = Clock::now();
         ExrOptions exr;
         exr.floatPixels = cli.floatPixels;
-        exr.commandLine = commandLine;
+        exr.commandLine = imageCommand(args);
         exr.spp = options.spp;
         exr.maxDepth = options.maxDepth;
         exr.threads = options.threads;
@@ -293,13 +344,24 @@ int renderCommand(const std::vector<std::string>& args, const std::string& comma
         if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure, &files);
         stats.writeSeconds = secondsSince(t0);
         if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson(), &files);
+        enterPhase(Phase::Commit);
         files.commit();
+        // What an interruption from now on leaves behind.
+        if (frame == frames.last)
+            setInterruptOutcome(cli.frames ? "every frame was written" : "the output was written");
+        else
+            setInterruptOutcome("frames " + std::to_string(frames.first) + " to " +
+                                std::to_string(frame) + " written, " + std::to_string(frame + 1) +
+                                " and later not");
 
         if (!cli.quiet) {
             printSummary(stats, output(cli.exr), output(cli.png));
             std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
         }
     }
+    // A signal after the last commit still ends as interrupted (its line says
+    // the files were written): a stop request is never ignored.
+    if (cancelRequested() && mpi.isRoot()) return reportInterrupted();
     return 0;
 }
 
