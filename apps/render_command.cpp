@@ -153,10 +153,12 @@ Scene loadSceneNamingFile(const std::string& path) {
         return loadScene(path);
     } catch (const std::bad_alloc&) {
         const std::string file = fileBeingLoaded().empty() ? path : fileBeingLoaded();
+        // The limit as set (what is left of it is about nothing by now).
+        const MemoryFacts facts = readMemoryFacts();
+        const auto mib = [](double b) { return std::to_string((long long)(b / (1 << 20))) + " MiB"; };
         std::string limit;
-        if (const std::optional<MemoryLimit> l = tightestMemoryLimit(readMemoryFacts()))
-            limit = " (at most " + std::to_string((long long)(l->bytes / (1 << 20))) +
-                    " MiB allowed by " + l->source + ")";
+        if (facts.addressSpaceBytes) limit = " (ulimit -v: " + mib(*facts.addressSpaceBytes) + ")";
+        else if (facts.cgroupLimitBytes) limit = " (cgroup memory limit: " + mib(*facts.cgroupLimitBytes) + ")";
         throw InputError(file, 0, "out of memory while loading this file" + limit);
     }
 }

@@ -2,7 +2,7 @@
 
 #include <csignal>
 #include <cstdlib>
-#include <cstring>
+#include <string>
 
 namespace raylab {
 
@@ -18,12 +18,15 @@ const char* phaseName(Phase phase) {
 }
 
 void enterPhase(Phase phase) {
-    static bool stopped = false;
+    static int entered[5] = {};
+    const int count = ++entered[int(phase)];
     const char* stopAt = std::getenv("RAYLAB_TEST_STOP_AT");
-    if (!stopped && stopAt && std::strcmp(stopAt, phaseName(phase)) == 0) {
-        stopped = true;
-        std::raise(SIGSTOP);
-    }
+    if (!stopAt) return;
+    // "render" stops at the first render, "render:2" at the second (a sequence's frame 2).
+    const std::string wanted = stopAt;
+    const size_t colon = wanted.find(':');
+    const int nth = colon == std::string::npos ? 1 : std::atoi(wanted.c_str() + colon + 1);
+    if (wanted.substr(0, colon) == phaseName(phase) && count == nth) std::raise(SIGSTOP);
 }
 
 }  // namespace raylab

@@ -1,6 +1,7 @@
 #include "apps/signals.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <semaphore.h>
 #include <unistd.h>
 
@@ -23,14 +24,24 @@ namespace {
 sem_t g_wake;                         // posted by the handler (sem_post is async-signal-safe)
 std::atomic<int> g_signalsSeen{0};
 std::atomic<bool> g_exitClaimed{false};
+std::atomic<bool> g_watchdogRunning{false};
 std::mutex g_outcomeMutex;
 std::string g_outcome = "no output written";
 
 extern "C" void onStopSignal(int sig) {
     const int saved = errno;
     requestCancel(sig);
-    g_signalsSeen.fetch_add(1);
+    const int seen = g_signalsSeen.fetch_add(1) + 1;
     ::sem_post(&g_wake);
+    // Without a watchdog (no thread could be started), a second signal still
+    // ends the process, with async-signal-safe calls only.
+    if (seen >= 2 && !g_watchdogRunning.load() && !commitInProgress() &&
+        !g_exitClaimed.exchange(true)) {
+        removeInFlightTempFiles();
+        static const char kLine[] = "raylab: interrupted by a second signal\n";
+        [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, kLine, sizeof kLine - 1);
+        ::_exit(128 + sig);
+    }
     errno = saved;
 }
 
@@ -59,7 +70,7 @@ void waitOrSecondSignal(double seconds) {
     }
 }
 
-void watchdog() {
+extern "C" void* watchdog(void*) {
     while (::sem_wait(&g_wake) != 0) {
     }
     // The phases get a moment to stop at their check points (then main
@@ -68,11 +79,23 @@ void watchdog() {
     // Never in the middle of renaming an output group: the commit undoes its
     // renames when it sees the request, and then the exit is safe.
     while (commitInProgress()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    if (g_exitClaimed.exchange(true)) return;
+    if (g_exitClaimed.exchange(true)) return nullptr;
     removeInFlightTempFiles();
     const std::string line = interruptLine();
     [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
     ::_exit(128 + cancelSignal());
+}
+
+/// Starts the watchdog on a small stack (it counts against `ulimit -v`); the
+/// process goes on without one when no thread can be started.
+void startWatchdog() {
+    pthread_attr_t attr;
+    if (::pthread_attr_init(&attr) != 0) return;
+    ::pthread_attr_setstacksize(&attr, 256 * 1024);
+    ::pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+    pthread_t thread;
+    if (::pthread_create(&thread, &attr, watchdog, nullptr) == 0) g_watchdogRunning.store(true);
+    ::pthread_attr_destroy(&attr);
 }
 
 /// Opens /dev/null on 0, 1 or 2 when closed (`raylab ... >&-`).
@@ -98,7 +121,7 @@ void installSignalHandling() {
     sa.sa_flags = SA_RESTART;  // reads and writes go on; the check points stop the work
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
-    std::thread(watchdog).detach();
+    startWatchdog();
 }
 
 void setInterruptOutcome(const std::string& outcome) {

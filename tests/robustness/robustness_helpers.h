@@ -56,8 +56,11 @@ inline bool contains(const std::string& s, const std::string& part) {
 class Process {
 public:
     /// `addressSpaceLimit` > 0 runs raylab under that RLIMIT_AS (`ulimit -v`), in bytes.
+    /// `env` adds or replaces environment variables ("NAME=value").
+    /// `outFile` "" leaves stdout closed; "|" makes it a pipe whose reading end is closed.
     Process(const std::vector<std::string>& args, const std::string& outFile,
-            const std::string& errFile, double addressSpaceLimit = 0) {
+            const std::string& errFile, double addressSpaceLimit = 0,
+            const std::vector<std::string>& env = {}) {
         struct rlimit as {};
         ::getrlimit(RLIMIT_AS, &as);
         if (addressSpaceLimit > 0) as.rlim_cur = rlim_t(addressSpaceLimit);
@@ -66,6 +69,20 @@ public:
         std::vector<char*> argv;
         for (std::string& a : all) argv.push_back(a.data());
         argv.push_back(nullptr);
+        // The environment is built before fork: the child may only exec.
+        std::vector<std::string> vars = env;
+        for (char** e = environ; *e; ++e) {
+            const std::string var = *e;
+            const std::string name = var.substr(0, var.find('='));
+            if (std::none_of(env.begin(), env.end(),
+                             [&](const std::string& v) { return v.substr(0, v.find('=')) == name; }))
+                vars.push_back(var);
+        }
+        std::vector<char*> envp;
+        for (std::string& v : vars) envp.push_back(v.data());
+        envp.push_back(nullptr);
+        int pipeFds[2] = {-1, -1};
+        if (outFile == "|" && ::pipe(pipeFds) != 0) return;
         m_start = std::chrono::steady_clock::now();
         // Signals sent right after fork must not reach the test framework's
         // own handlers in the child (it is still a copy of this process until
@@ -78,19 +95,29 @@ public:
         m_pid = ::fork();
         if (m_pid == 0) {
             // Child: only async-signal-safe calls until exec.
-            for (int sig : {SIGINT, SIGTERM, SIGSEGV, SIGABRT, SIGFPE, SIGILL, SIGBUS})
+            for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGSEGV, SIGABRT, SIGFPE, SIGILL, SIGBUS})
                 ::signal(sig, SIG_DFL);
             ::sigprocmask(SIG_SETMASK, &previous, nullptr);
             if (addressSpaceLimit > 0 && ::setrlimit(RLIMIT_AS, &as) != 0) ::_exit(125);
             const int in = ::open("/dev/null", O_RDONLY);
-            const int out = ::open(outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            const int out = outFile == "|" ? pipeFds[1]
+                            : outFile.empty()
+                                ? -2
+                                : ::open(outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-            if (in < 0 || out < 0 || err < 0) ::_exit(126);
+            if (in < 0 || out == -1 || err < 0) ::_exit(126);
             ::dup2(in, 0);
-            ::dup2(out, 1);
+            if (out >= 0) ::dup2(out, 1);
+            else ::close(1);
             ::dup2(err, 2);
-            ::execv(argv[0], argv.data());
+            if (pipeFds[0] >= 0) ::close(pipeFds[0]);
+            ::execve(argv[0], argv.data(), envp.data());
             ::_exit(127);
+        }
+        // The reading end goes away at once: raylab's stdout is a broken pipe.
+        if (pipeFds[0] >= 0) {
+            ::close(pipeFds[0]);
+            ::close(pipeFds[1]);
         }
         ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     }
@@ -105,6 +132,16 @@ public:
     Process& operator=(const Process&) = delete;
 
     bool started() const { return m_pid > 0; }
+    /// Waits until the process has stopped itself (RAYLAB_TEST_STOP_AT) or
+    /// exited; true when it is stopped. No timing: waitpid(WUNTRACED) blocks.
+    bool waitUntilStopped() {
+        int status = 0;
+        if (::waitpid(m_pid, &status, WUNTRACED) != m_pid) return false;
+        if (WIFSTOPPED(status)) return true;
+        m_reaped = true;
+        m_exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        return false;
+    }
     pid_t pid() const { return m_pid; }
     void signal(int sig) const {
         if (m_pid > 0 && !m_reaped) ::kill(m_pid, sig);
@@ -149,11 +186,11 @@ struct RunResult {
 /// Runs `raylab ARGS` with a deadline; a process still running after
 /// `timeoutSeconds` is killed and reported as timed out.
 inline RunResult runRaylab(const std::vector<std::string>& args, double timeoutSeconds = 60,
-                           double addressSpaceLimit = 0) {
+                           double addressSpaceLimit = 0, const std::vector<std::string>& env = {}) {
     const TempDir io;
     RunResult r;
     {
-        Process p(args, io.file("stdout"), io.file("stderr"), addressSpaceLimit);
+        Process p(args, io.file("stdout"), io.file("stderr"), addressSpaceLimit, env);
         REQUIRE(p.started());
         if (p.wait(timeoutSeconds)) {
             r.exitCode = p.exitCode();

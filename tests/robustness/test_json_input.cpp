@@ -262,3 +262,10 @@ TEST_CASE("json: lights inside objects and other odd but valid scenes render") {
     rendered(scene(R"({"type": "plane", "point": [0, -1, 0], "normal": [0, 1e-300, 0]},
                      {"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1e300], "radius": 1})"));
 }
+
+TEST_CASE("json: a \\u0000 escape in a key is shown, not the end of the message") {
+    // Issue 22: the message stopped at the NUL ("objects[0].rad").
+    refused("{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+            " \"objects\": [{\"type\": \"sphere\", \"rad\\u0000ius\": 1}]}\n",
+            2, "objects[0].rad\\x00ius: unknown key");
+}
