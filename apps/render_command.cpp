@@ -53,10 +53,12 @@ const char* const kRenderHelp =
     "\n"
     "output:\n"
     "  -o, --output FILE.exr    OpenEXR output (required). Every output path is checked before the\n"
-    "                           render; the files are written to temporary names and renamed only\n"
-    "                           once all are written, so a failed write leaves existing files as\n"
-    "                           they were. A symbolic link is followed (its target is replaced);\n"
-    "                           a device, FIFO or socket is refused\n"
+    "                           render (one that is a file the render reads, or another output, is\n"
+    "                           refused); the files are written to temporary names and renamed only\n"
+    "                           once all are written, and put back if a rename fails, so a failed\n"
+    "                           write leaves existing files as they were (their mode is kept).\n"
+    "                           A symbolic link is followed (its target is replaced); a device,\n"
+    "                           FIFO or socket is refused\n"
     "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
@@ -94,7 +96,10 @@ const char* const kRenderHelp =
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
     "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
-    "                           --threads defaults to the cores of a machine / its ranks\n";
+    "                           --threads defaults to the cores of a machine / its ranks\n"
+    "\n"
+    "SIGINT, SIGTERM and SIGHUP stop the render in any phase: temporaries are removed, earlier\n"
+    "outputs are left as they were, exit code 128+signal (130, 143, 129).\n";
 
 namespace {
 
