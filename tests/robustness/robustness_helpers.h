@@ -28,6 +28,12 @@ namespace raylab::robust {
 using test::readFile;
 using test::TempDir;
 
+/// A valid JSON scene: one sphere, one light, the default image size.
+inline const std::string kSphereScene =
+    "{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+    " \"lights\": [{\"type\": \"point\", \"position\": [2, 3, 4]}],\n"
+    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
+
 /// The lines of `text` without their '\n' (a last line without one counts).
 inline std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> out;

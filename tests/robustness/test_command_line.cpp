@@ -14,10 +14,7 @@ using namespace raylab::robust;
 
 namespace {
 
-const std::string kScene =
-    "{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-    " \"lights\": [{\"type\": \"point\", \"position\": [2, 3, 4]}],\n"
-    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
+const std::string& kScene = kSphereScene;
 
 }  // namespace
 
