@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <csignal>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -317,8 +316,8 @@ int renderCommand(const std::vector<std::string>& args) {
                                                 &report);
         bar.finish();
         if (result.cancelled) {
-            if (mpi.isRoot()) return reportInterrupted();
-            return 128 + (cancelSignal() ? cancelSignal() : SIGINT);
+            if (!mpi.isRoot()) claimExit();  // rank 0 alone reports
+            return reportInterrupted();
         }
         if (!mpi.isRoot()) continue;  // the other ranks only render
 

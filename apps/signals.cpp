@@ -45,6 +45,10 @@ extern "C" void onStopSignal(int sig) {
     errno = saved;
 }
 
+/// The signal that stopped the run; a stop without one (another MPI rank
+/// cancelled the frame) counts as SIGINT, as it always has.
+int stopSignal() { return cancelSignal() != 0 ? cancelSignal() : SIGINT; }
+
 const char* signalName(int sig) {
     switch (sig) {
         case SIGINT: return "SIGINT";
@@ -56,7 +60,7 @@ const char* signalName(int sig) {
 
 std::string interruptLine() {
     std::lock_guard<std::mutex> lock(g_outcomeMutex);
-    return std::string("raylab: interrupted by ") + signalName(cancelSignal()) + ": " + g_outcome + "\n";
+    return std::string("raylab: interrupted by ") + signalName(stopSignal()) + ": " + g_outcome + "\n";
 }
 
 /// Waits for `seconds`, or less when another signal is posted.
@@ -83,7 +87,7 @@ extern "C" void* watchdog(void*) {
     removeInFlightTempFiles();
     const std::string line = interruptLine();
     [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
-    ::_exit(128 + cancelSignal());
+    ::_exit(128 + stopSignal());
 }
 
 /// Starts the watchdog on a small stack (it counts against `ulimit -v`); the
@@ -134,7 +138,7 @@ int reportInterrupted() {
         const std::string line = interruptLine();
         [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
     }
-    return 128 + cancelSignal();
+    return 128 + stopSignal();
 }
 
 void claimExit() { g_exitClaimed.store(true); }
