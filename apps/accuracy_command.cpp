@@ -17,8 +17,8 @@
 #include "renderer/io/scene_loader.h"
 #include "tools/accuracy/accuracy_report.h"
 #include "tools/accuracy/accuracy_sweep.h"
-#include "tools/report/bench_util.h"
 #include "tools/report/svg_plot.h"
+#include "tools/report/table_format.h"
 
 namespace raylab {
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/io/json_string.h"
+
 namespace raylab {
 
 namespace {
@@ -37,7 +39,7 @@ public:
     }
     void string(const char* key, const std::string& v) {
         item(key);
-        appendString(v);
+        m_out += jsonString(v);
     }
     void numberArray(const char* key, const std::vector<uint64_t>& values) {
         item(key);
@@ -53,7 +55,7 @@ public:
         m_out += '[';
         for (size_t i = 0; i < values.size(); ++i) {
             if (i) m_out += ", ";
-            appendString(values[i]);
+            m_out += jsonString(values[i]);
         }
         m_out += ']';
     }
@@ -78,34 +80,10 @@ private:
         }
         m_first = false;
         if (key) {
-            appendString(key);
+            m_out += jsonString(key);
             m_out += ": ";
         }
     }
-    void appendString(const std::string& s) {
-        m_out += '"';
-        for (unsigned char c : s) {
-            switch (c) {
-                case '"': m_out += "\\\""; break;
-                case '\\': m_out += "\\\\"; break;
-                case '\n': m_out += "\\n"; break;
-                case '\r': m_out += "\\r"; break;
-                case '\t': m_out += "\\t"; break;
-                case '\b': m_out += "\\b"; break;
-                case '\f': m_out += "\\f"; break;
-                default:
-                    if (c < 0x20) {
-                        char buf[8];
-                        std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                        m_out += buf;
-                    } else {
-                        m_out += char(c);  // UTF-8 bytes pass through unchanged
-                    }
-            }
-        }
-        m_out += '"';
-    }
-
     std::string m_out;
     int m_depth = 0;
     bool m_first = true;

@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "renderer/image_compare.h"
-#include "tools/report/bench_util.h"
+#include "renderer/io/json_string.h"
+#include "tools/report/table_format.h"
 
 namespace raylab {
 
@@ -230,9 +231,7 @@ std::string accuracyJson(const AccuracyReport& rep) {
 
 PlotSpec accuracyPlot(const AccuracyReport& rep) {
     PlotSpec spec;
-    const size_t slash = rep.scene.find_last_of('/');
-    const std::string name = slash == std::string::npos ? rep.scene : rep.scene.substr(slash + 1);
-    spec.title = "Error vs time: " + name + ", " + std::to_string(rep.width) + "x" +
+    spec.title = "Error vs time: " + fileName(rep.scene) + ", " + std::to_string(rep.width) + "x" +
                  std::to_string(rep.height) + ", " + std::to_string(rep.threads) + " thread" +
                  (rep.threads == 1 ? "" : "s");
     spec.x.label = "CPU time per frame (build + render, all threads), ms";

@@ -18,7 +18,8 @@
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
 #include "renderer/timing.h"
-#include "tools/report/bench_util.h"
+#include "tools/report/machine.h"
+#include "tools/report/phase_clock.h"
 
 namespace raylab {
 

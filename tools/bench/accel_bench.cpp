@@ -22,13 +22,16 @@
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/json_string.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
 #include "renderer/whitted_integrator.h"
 #include "tools/bench/scene_generators.h"
-#include "tools/report/bench_util.h"
+#include "tools/report/machine.h"
+#include "tools/report/phase_clock.h"
 #include "tools/report/svg_plot.h"
+#include "tools/report/table_format.h"
 
 namespace raylab {
 
@@ -294,11 +297,6 @@ Crossover findCrossover(const std::string& family, std::vector<const Row*> rows)
     return c;
 }
 
-std::string baseName(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
 std::string csvTable(const std::vector<Row>& rows, const Settings& s, const std::string& cpu) {
     std::string t =
         "family,scene,parameter,primitives,embree_build_s,embree_frame_s,embree_rays,"
@@ -474,7 +472,7 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
     if (!options.sceneFiles.empty()) families.push_back("file");
     for (const std::string& path : options.sceneFiles) {
         Scene scene = loadScene(path);
-        rows.push_back(measureScene(scene, s, "file", baseName(path), 0));
+        rows.push_back(measureScene(scene, s, "file", fileName(path), 0));
         printRow(out, rows.back());
     }
 

@@ -1,6 +1,7 @@
 #include "tools/bench/effects_bench.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <ostream>
 #include <string>
@@ -10,23 +11,10 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "tools/report/phase_clock.h"
+#include "tools/report/table_format.h"
 
 namespace raylab {
-
-namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string baseName(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-}  // namespace
 
 int runEffectsBench(const EffectsBenchOptions& options, std::ostream& out) {
     char line[512];
@@ -60,7 +48,7 @@ int runEffectsBench(const EffectsBenchOptions& options, std::ostream& out) {
         for (const std::string& n : es.names()) names += (names.empty() ? "" : ",") + n;
         const double ms = median(ts), mg = median(tg);
         std::snprintf(line, sizeof line, "%-16s %-62s %10.4f %10.4f %7.2fx %12llu %12llu %9s\n",
-                      baseName(path).c_str(), names.empty() ? "-" : names.c_str(), ms, mg, mg / ms,
+                      fileName(path).c_str(), names.empty() ? "-" : names.c_str(), ms, mg, mg / ms,
                       (unsigned long long)rs.rays.total(), (unsigned long long)rg.rays.total(),
                       identical ? "yes" : "NO");
         out << line;

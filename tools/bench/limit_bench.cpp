@@ -19,10 +19,13 @@
 #include "renderer/effects.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/json_string.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
-#include "tools/report/bench_util.h"
+#include "tools/report/machine.h"
+#include "tools/report/phase_clock.h"
+#include "tools/report/table_format.h"
 
 namespace raylab {
 

@@ -1,28 +1,12 @@
 #pragma once
-// Small helpers shared by the benchmarks: machine description, medians,
-// output-format choice and number formatting.
+// Timing a measured phase and summarising repeated runs of it.
 
 #include <chrono>
-#include <string>
 #include <vector>
 
 #include "renderer/timing.h"  // secondsSince, threadCpuSeconds
 
 namespace raylab {
-
-/// The CPU model from /proc/cpuinfo ("model name"), or "unknown CPU".
-std::string cpuModelName();
-
-/// The 1-minute load average from /proc/loadavg (-1 when unreadable): on a
-/// shared machine it says how far wall-clock timings can be trusted.
-double loadAverage();
-
-/// Logical cores the process may use (std::thread::hardware_concurrency, >= 1).
-int logicalCores();
-
-/// Threads a TBB loop gets for a `threads` setting (0 = all cores).
-int effectiveThreads(int threads);
-
 
 /// \brief The clock of a benchmark's timed phases.
 /// \details With one thread (TBB then runs the whole loop on the calling
@@ -55,20 +39,5 @@ private:
 
 /// Median of the values (mean of the middle two for an even count); 0 when empty.
 double median(std::vector<double> values);
-
-enum class TableFormat { Csv, Json };
-
-/// \brief The format chosen by a file name's extension (.csv or .json, any case).
-/// \throws UsageError for any other extension, naming `what` (e.g. "--output").
-TableFormat tableFormatOf(const std::string& path, const std::string& what);
-
-/// A double for CSV/JSON: shortest round-trip form ("%.17g" trimmed); non-finite -> "null".
-std::string jsonNumber(double v);
-
-/// `s` as a JSON string literal (quotes and escapes included).
-std::string jsonString(const std::string& s);
-
-/// `s` as a CSV field (quoted when it holds a comma, quote or newline).
-std::string csvField(const std::string& s);
 
 }  // namespace raylab
