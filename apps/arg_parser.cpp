@@ -65,12 +65,12 @@ double ArgParser::number(const std::string& flag, double lo, double hi) {
     return x;
 }
 
-std::string ArgParser::choice(const std::string& flag, const std::vector<std::string>& choices) {
+size_t ArgParser::choiceIndex(const std::string& flag, const std::vector<std::string>& words) {
     const std::string v = value(flag);
     std::string list;
-    for (const std::string& c : choices) {
-        if (c == v) return v;
-        list += (list.empty() ? "" : "|") + c;
+    for (size_t i = 0; i < words.size(); ++i) {
+        if (words[i] == v) return i;
+        list += (list.empty() ? "" : "|") + words[i];
     }
     throw UsageError(flag + ": expected " + list + " (got '" + v + "')");
 }

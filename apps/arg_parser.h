@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -23,9 +24,23 @@ public:
     long long integer(const std::string& flag, long long lo, long long hi);
     double number(const std::string& flag, double lo, double hi);
     /// One of `choices`.
-    std::string choice(const std::string& flag, const std::vector<std::string>& choices);
+    std::string choice(const std::string& flag, const std::vector<std::string>& choices) {
+        return choices[choiceIndex(flag, choices)];
+    }
+    /// The value meant by one of the words of `choices` (a table of
+    /// renderer/render_option_names.h).
+    template <class E>
+    E choice(const std::string& flag, const std::vector<std::pair<std::string, E>>& choices) {
+        std::vector<std::string> words;
+        for (const auto& entry : choices) words.push_back(entry.first);
+        return choices[choiceIndex(flag, words)].second;
+    }
 
 private:
+    /// Index in `words` of the value after `flag`; any other value is a
+    /// UsageError that lists the words.
+    size_t choiceIndex(const std::string& flag, const std::vector<std::string>& words);
+
     std::vector<std::string> m_args;
     size_t m_pos = 0;
     std::vector<std::string> m_seen;  ///< flags whose value was read (-o as --output)

@@ -39,6 +39,7 @@
 #include "renderer/memory_limit.h"
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
+#include "renderer/render_option_names.h"
 #include "renderer/render_setup.h"
 #include "renderer/timing.h"
 
@@ -198,12 +199,12 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--min-weight") o.minWeight = p.number(a, 0, 1);
         else if (a == "--spd") o.spd = true;
         else if (a == "--threads") o.threads = int(p.integer(a, 1, 4096));
-        else if (a == "--accel") o.accel = p.choice(a, {"embree", "naive"});
-        else if (a == "--bvh-quality") o.bvhQuality = p.choice(a, {"low", "medium", "high"});
+        else if (a == "--accel") o.accel = p.choice(a, acceleratorNames());
+        else if (a == "--bvh-quality") o.bvhQuality = p.choice(a, bvhQualityNames());
         else if (a == "--robust") o.robust = true;
-        else if (a == "--precision") o.precision = p.choice(a, {"float", "double"});
+        else if (a == "--precision") o.precision = p.choice(a, precisionNames());
         else if (a == "--epsilon") o.epsilon = p.number(a, 0, 1e30);
-        else if (a == "--effects") o.effects = p.choice(a, {"auto", "all"});  // hidden: the general kernel
+        else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());  // hidden: the general kernel
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (cli.scene.empty()) cli.scene = a;
         else throw UsageError("unexpected argument '" + a + "' (one scene per render)");
@@ -326,7 +327,7 @@ int renderCommand(const std::vector<std::string>& args) {
         stats.primitives = scene.primitiveCount();
         stats.effects = effects.names();
         stats.threads = threadsPerRank(mpi, options);
-        stats.accel = options.accel;
+        stats.accel = acceleratorName(options.accel);
         stats.width = options.width;
         stats.height = options.height;
         stats.spp = options.spp;
@@ -342,7 +343,7 @@ int renderCommand(const std::vector<std::string>& args) {
         exr.maxDepth = options.maxDepth;
         exr.threads = options.threads;
         exr.scenePath = cli.scene;
-        exr.accel = options.accel;
+        exr.accel = acceleratorName(options.accel);
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.
         AtomicFileGroup files;

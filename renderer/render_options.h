@@ -6,6 +6,7 @@
 
 #include "geometry/spawn.h"
 #include "renderer/accel/accel_options.h"
+#include "renderer/accelerator_kind.h"
 
 namespace raylab {
 
@@ -28,7 +29,7 @@ struct RenderOptions {
     uint64_t seed = 0;        ///< jitter seed; the image is a pure function of it
 
     int threads = 0;          ///< 0 = all cores
-    std::string accel = "embree";
+    AcceleratorKind accel = AcceleratorKind::Embree;
     AccelOptions accelOptions;  ///< also the intersectors' accuracy knobs (precision, polygons)
     SpawnSettings spawn;      ///< self-intersection strategy
 

@@ -5,17 +5,27 @@
 
 #include <cstdint>
 #include <optional>
-#include <string>
 
 #include "geometry/shape.h"
+#include "renderer/accel/accel_options.h"
+#include "renderer/accelerator_kind.h"
 
 namespace raylab {
 
+/// --effects: only the effects the scene calls for (auto), or the general
+/// kernel that traces every ray type at every hit (all).
+enum class EffectsMode { Auto, All };
+
+/// Every field is parsed from its words (renderer/render_option_names.h) where
+/// it is typed, so an unknown word never reaches the renderer.
 struct RenderOverrides {
     std::optional<int> width, height, spp, maxDepth, threads, adaptiveMaxLevel;
     std::optional<double> adaptiveThreshold, minWeight, epsilon;
     std::optional<uint64_t> seed;
-    std::optional<std::string> accel, bvhQuality, precision, effects;
+    std::optional<AcceleratorKind> accel;
+    std::optional<AccelOptions::BvhQuality> bvhQuality;
+    std::optional<Precision> precision;
+    std::optional<EffectsMode> effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     bool spd = false;
     bool robust = false;

@@ -23,21 +23,15 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.minWeight) r.minWeight = *o.minWeight;
     if (o.seed) r.seed = *o.seed;
     if (o.accel) r.accel = *o.accel;
-    if (o.bvhQuality) {
-        r.accelOptions.quality = *o.bvhQuality == "low"    ? AccelOptions::BvhQuality::Low
-                                 : *o.bvhQuality == "high" ? AccelOptions::BvhQuality::High
-                                                           : AccelOptions::BvhQuality::Medium;
-    }
+    if (o.bvhQuality) r.accelOptions.quality = *o.bvhQuality;
     if (o.robust) r.accelOptions.robust = true;
-    if (o.precision)
-        r.accelOptions.intersect.precision =
-            *o.precision == "float" ? Precision::Float : Precision::Double;
+    if (o.precision) r.accelOptions.intersect.precision = *o.precision;
     if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;
     }
-    if (o.effects) r.forceAllEffects = *o.effects == "all";
+    if (o.effects) r.forceAllEffects = *o.effects == EffectsMode::All;
 }
 
 }  // namespace

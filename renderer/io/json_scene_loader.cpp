@@ -19,6 +19,7 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/io/shape_factory.h"
 #include "renderer/io/text_file.h"
+#include "renderer/render_option_names.h"
 #include "renderer/render_options.h"
 
 namespace raylab {
@@ -122,16 +123,13 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     if (const JsonValue* x = f.get("seed"))
         r.seed = uint64_t(integer(*x, f.path("seed"), 0, kMaxSeed));
     if (const JsonValue* x = f.get("precision"))
-        r.precision = choice<std::string>(*x, f.path("precision"),
-                                          {{"float", "float"}, {"double", "double"}});
+        r.precision = choice(*x, f.path("precision"), precisionNames());
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
     if (const JsonValue* x = f.get("bvh_quality"))
-        r.bvhQuality = choice<std::string>(
-            *x, f.path("bvh_quality"), {{"low", "low"}, {"medium", "medium"}, {"high", "high"}});
+        r.bvhQuality = choice(*x, f.path("bvh_quality"), bvhQualityNames());
     if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));
     if (const JsonValue* x = f.get("accel"))
-        r.accel =
-            choice<std::string>(*x, f.path("accel"), {{"embree", "embree"}, {"naive", "naive"}});
+        r.accel = choice(*x, f.path("accel"), acceleratorNames());
 }
 
 void SceneReader::readCamera(const JsonValue& v, const std::string& path) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "renderer/accel/accelerator.h"
+#include "renderer/accelerator_kind.h"
 #include "renderer/effects.h"
 #include "renderer/film.h"
 #include "renderer/io/scene_loader.h"

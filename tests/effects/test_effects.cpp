@@ -54,7 +54,7 @@ struct Run {
 Run renderWith(const Scene& s, bool general, int maxDepth = 5) {
     RenderOverrides o;
     o.maxDepth = maxDepth;
-    if (general) o.effects = "all";
+    if (general) o.effects = EffectsMode::All;
     const RenderOptions opt = resolveRenderOptions(s, o);
     auto accel = makeAccelerator("embree", s, opt.accelOptions);
     Run r;

@@ -18,6 +18,7 @@
 
 #include "fuzz_scratch.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/accelerator_kind.h"
 #include "renderer/effects.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
@@ -40,7 +41,7 @@ inline std::string exerciseScene(Scene& scene) {
     tiny.maxDepth = 3;
     tiny.spp = 1;
     tiny.threads = 1;
-    tiny.accel = "naive";
+    tiny.accel = AcceleratorKind::Naive;
     const RenderOptions options = resolveRenderOptions(scene, tiny);
     const std::unique_ptr<Accelerator> accel =
         makeAccelerator(options.accel, scene, options.accelOptions);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "renderer/accel/accelerator.h"
+#include "renderer/accelerator_kind.h"
 #include "renderer/effects.h"
 #include "renderer/io/json.h"
 #include "renderer/io/scene_loader.h"
@@ -48,7 +49,7 @@ struct Rendered {
     RenderOptions options;
 };
 
-Rendered renderNff(const std::string& text, const std::string& accel, bool spd,
+Rendered renderNff(const std::string& text, AcceleratorKind accel, bool spd,
                    std::optional<int> width = {}, std::optional<int> height = {}) {
     const Scene scene = loadNffScene(text, "tiny.nff");
     RenderOverrides o;
@@ -70,8 +71,8 @@ uint64_t count(const Rendered& r, RayType t) { return r.result.rays.total(t); }
 }  // namespace
 
 TEST_CASE("spd render: 4x4 pixel centres, one sphere, one light: hits and shadow rays") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         // Pixel centres a, b ∈ {±0.25, ±0.75}: only the four middle pixels
         // have s = 0.125 < 0.473 (the next, s = 0.625, misses): 4 hits. On the
         // middle rays t = 3/√1.125 - √(2.89 - 1) = 1.45366, so
@@ -88,8 +89,8 @@ TEST_CASE("spd render: 4x4 pixel centres, one sphere, one light: hits and shadow
 }
 
 TEST_CASE("spd render: the same scene in SPD mode: 25 corner rays, 5 hits, 1 shadow ray") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         // Corners a, b ∈ {-1, -0.5, 0, 0.5, 1}: s = 0 (centre) and s = 0.25
         // (the four corners next to it) hit; s = 0.5 already misses
         // (distance² 3 > 2.89): 5 hits of 25. The centre hit and the hits at
@@ -137,7 +138,7 @@ TEST_CASE("spd render: SPD eye rays = (W+1)(H+1); --spd means 512x512, depth 5")
     CHECK(spd.maxDepth == 5);
     CHECK(spd.spp == 1);
     // Flags still override the SPD size; a non-square image has 8 x 6 corners.
-    const Rendered r = renderNff(sphereScene(kMatte), "embree", true, 7, 5);
+    const Rendered r = renderNff(sphereScene(kMatte), AcceleratorKind::Embree, true, 7, 5);
     CHECK(r.result.film.width == 7);
     CHECK(count(r, RayType::Camera) == 8 * 6);
 }
@@ -147,7 +148,7 @@ TEST_CASE("spd render: reflective surfaces spawn one mirror ray per hit") {
         CAPTURE(spd);
         // Ks = 0.5 > 0: every camera hit spawns a reflection ray (depth 2),
         // which leaves the convex sphere and hits nothing.
-        const Rendered r = renderNff(sphereScene(kMirror), "embree", spd, 4, 4);
+        const Rendered r = renderNff(sphereScene(kMirror), AcceleratorKind::Embree, spd, 4, 4);
         const uint64_t hits = spd ? 5 : 4;
         CHECK(r.result.rays.cameraHits == hits);
         CHECK(count(r, RayType::Reflection) == hits);
@@ -157,8 +158,8 @@ TEST_CASE("spd render: reflective surfaces spawn one mirror ray per hit") {
 }
 
 TEST_CASE("spd render: a glass sphere: zero-weight reflections are traced only in SPD mode") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         // T = 0.9, Ks = 0, no lights (no shadow rays). In a sphere every
         // inner hit sees the same angle as the refracted entry ray, so total
         // internal reflection never happens.
@@ -204,7 +205,7 @@ TEST_CASE("spd render: a matte scene (like tetra) spawns no reflection rays") {
     const EffectSet effects = analyseEffects(scene, opt);
     CHECK_FALSE(effects.has(kReflection));
     CHECK_FALSE(effects.has(kRefraction));
-    const Rendered r = renderNff(text, "embree", true, 16, 16);
+    const Rendered r = renderNff(text, AcceleratorKind::Embree, true, 16, 16);
     CHECK(count(r, RayType::Camera) == 17 * 17);
     CHECK(r.result.rays.cameraHits > 0);
     CHECK(count(r, RayType::Shadow) > 0);

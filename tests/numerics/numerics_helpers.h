@@ -19,6 +19,7 @@
 #include "geometry/primitives.h"
 #include "shape_queries.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/accelerator_kind.h"
 #include "renderer/effects.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
@@ -38,14 +39,16 @@ using accel_test::shapeObject;
 /// One accelerator configuration the hard cases run through.
 struct Backend {
     std::string label;
-    std::string name;  ///< makeAccelerator name
+    AcceleratorKind kind;
     bool robust = false;
 };
 
 /// Embree (default flags), Embree with RTC_SCENE_FLAG_ROBUST, and the naive loop.
 inline std::vector<Backend> allBackends() {
     return {
-        {"embree", "embree", false}, {"embree robust", "embree", true}, {"naive", "naive", false}};
+        {"embree", AcceleratorKind::Embree, false},
+            {"embree robust", AcceleratorKind::Embree, true},
+            {"naive", AcceleratorKind::Naive, false}};
 }
 
 /// Builds `b` over `scene` with geometry relative to `origin` (the eye) and
@@ -57,7 +60,7 @@ inline std::unique_ptr<Accelerator> build(const Backend& b, const Scene& scene,
     o.robust = b.robust;
     o.origin = origin;
     o.intersect.precision = precision;
-    return makeAccelerator(b.name, scene, o);
+    return makeAccelerator(b.kind, scene, o);
 }
 
 /// \brief Ray-sphere roots in long double (64-bit significand), for rays

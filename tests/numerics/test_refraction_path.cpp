@@ -70,7 +70,7 @@ TEST_CASE("refraction path: total internal reflection at the critical angle and 
             CAPTURE(b.label);
             Scene scene = prism(critical + delta);
             RenderOverrides o;
-            o.accel = b.name;
+            o.accel = b.kind;
             const RenderResult r = renderWith(scene, o);
             CHECK(r.nonFiniteSamples == 0);
             CHECK(nonFiniteValues(r.film) == 0);

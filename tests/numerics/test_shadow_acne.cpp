@@ -118,7 +118,7 @@ TEST_CASE("acne: grounds near and 1e5 from the origin, robust offset vs fixed ep
                     line += buf;
                 }
                 RenderOverrides f;
-                f.precision = std::string("float");
+                f.precision = Precision::Float;
                 const AcneCount fl = renderAcne(scene, f);
                 CHECK(fl.nonFinite == 0);
                 line += ", float+robust " + std::to_string(fl.black);

@@ -71,7 +71,7 @@ TEST_CASE("watertight: closed sphere mesh shot from its centre, every back end")
     for (const Vec3 centre : {Vec3{0, 0, 0}, Vec3{0.1, -0.2, 0.3}}) {
         for (const Backend& b : allBackends()) {
             CAPTURE(b.label);
-            const bool naive = b.name == "naive";
+            const bool naive = b.kind == AcceleratorKind::Naive;
             const auto mesh = floatExactSphere(centre, 2.0, naive ? 32 : 64, naive ? 64 : 128);
             Scene scene;
             scene.materials.resize(1);
@@ -103,8 +103,8 @@ TEST_CASE("watertight: hits on the closed mesh land on the surface at the right 
     Scene scene;
     scene.materials.resize(1);
     scene.objects.push_back(meshObject("ball", mesh));
-    const auto embree = build({"embree robust", "embree", true}, scene, centre);
-    const auto naive = build({"naive", "naive", false}, scene, centre);
+    const auto embree = build({"embree robust", AcceleratorKind::Embree, true}, scene, centre);
+    const auto naive = build({"naive", AcceleratorKind::Naive, false}, scene, centre);
     Rng rng(707);
     int bad = 0;
     double worst = 0;

@@ -64,11 +64,11 @@ TEST_CASE("whole renders: every shipped scene is free of NaN/Inf, default and st
             o.width = 40;
             o.height = 30;
             if (stress) {
-                o.precision = std::string("float");
+                o.precision = Precision::Float;
                 o.epsilon = 1e-6;
                 o.maxDepth = 7;
                 o.robust = true;
-                o.effects = std::string("all");
+                o.effects = EffectsMode::All;
             } else {
                 o.adaptiveThreshold = 0.05;
             }

@@ -7,6 +7,7 @@
 
 #include "geometry/primitives.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/accelerator_kind.h"
 #include "renderer/effects.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
@@ -38,11 +39,11 @@ void addObject(Scene& s, std::unique_ptr<Shape> shape, uint32_t material,
     s.objects.push_back(std::move(o));
 }
 
-Color renderCentre(const Scene& s, const std::string& accelName, RayCounters* rays = nullptr) {
+Color renderCentre(const Scene& s, AcceleratorKind kind, RayCounters* rays = nullptr) {
     RenderOverrides o;
-    o.accel = accelName;
+    o.accel = kind;
     const RenderOptions opt = resolveRenderOptions(s, o);
-    auto accel = makeAccelerator(accelName, s, opt.accelOptions);
+    auto accel = makeAccelerator(kind, s, opt.accelOptions);
     const RenderResult r = render(s, *accel, opt, analyseEffects(s, opt));
     if (rays) *rays = r.rays;
     CHECK(r.nonFiniteSamples == 0);
@@ -59,8 +60,8 @@ Material matte(double kd, double ka) {
 }  // namespace
 
 TEST_CASE("whitted: a lit pixel is ambient + Lambert") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         Scene s = baseScene();
         s.ambient = Color(1.0);
         // Light at the eye: at the hit (0, 0, -4) on the sphere's front,
@@ -80,8 +81,8 @@ TEST_CASE("whitted: a lit pixel is ambient + Lambert") {
 }
 
 TEST_CASE("whitted: a shadowed pixel equals ambient alone") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         Scene s = baseScene();
         s.ambient = Color(0.5);
         // Light at (0, 10, 6), 45° above the hit point (0, 0, -4) whose normal
@@ -102,14 +103,14 @@ TEST_CASE("whitted: a light behind the surface adds nothing and traces no shadow
     s.lights.push_back({Light::Type::Point, {0, 0, -20}, {}, Color(1.0)});
     addObject(s, makeSphere({0, 0, -5}, 1), addMaterial(s, matte(0.5, 0.25)));
     RayCounters rays;
-    const Color c = renderCentre(s, "embree", &rays);
+    const Color c = renderCentre(s, AcceleratorKind::Embree, &rays);
     CHECK(c.r == doctest::Approx(0.25).epsilon(1e-6));
     CHECK(rays.total(RayType::Shadow) == 0);
 }
 
 TEST_CASE("whitted: a mirror reflects a known colour") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         Scene s = baseScene();
         s.ambient = Color(1.0);
         // The camera ray hits the mirror sphere head-on at (0, 0, -4) and
@@ -132,8 +133,8 @@ TEST_CASE("whitted: a mirror reflects a known colour") {
 }
 
 TEST_CASE("whitted: an ior 1.0 glass sphere lets the background through") {
-    for (const std::string accel : {"embree", "naive"}) {
-        CAPTURE(accel);
+    for (const AcceleratorKind accel : {AcceleratorKind::Embree, AcceleratorKind::Naive}) {
+        CAPTURE(acceleratorName(accel));
         Scene s = baseScene();
         s.background = Color(0.2, 0.4, 0.6);
         Material glass;

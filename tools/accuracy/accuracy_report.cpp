@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/image_compare.h"
+#include "renderer/render_option_names.h"
 #include "renderer/io/json_string.h"
 #include "tools/report/table_format.h"
 
@@ -42,8 +43,6 @@ std::string padLeft(const std::string& s, size_t w) {
 double mrays(const AccuracyResult& r) {
     return r.renderCpuSeconds > 0 ? double(r.rays) / r.renderCpuSeconds * 1e-6 : 0;
 }
-
-const char* precisionName(Precision p) { return p == Precision::Float ? "float" : "double"; }
 
 std::string jsonBool(bool b) { return b ? "true" : "false"; }
 

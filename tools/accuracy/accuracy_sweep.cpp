@@ -78,10 +78,10 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     }
     ov.minWeight = s.minWeight;
     ov.seed = 0;
-    ov.accel = std::string("embree");
-    ov.bvhQuality = std::string(bvhQualityName(s.quality));
+    ov.accel = AcceleratorKind::Embree;
+    ov.bvhQuality = s.quality;
     ov.robust = s.robust;
-    ov.precision = std::string(s.precision == Precision::Float ? "float" : "double");
+    ov.precision = s.precision;
     if (s.offset == OffsetMode::FixedEpsilon) ov.epsilon = s.epsilon;
     const RenderOptions options = resolveRenderOptions(scene, ov);
 

@@ -29,7 +29,7 @@ int runEffectsBench(const EffectsBenchOptions& options, std::ostream& out) {
         if (options.threads) o.threads = options.threads;
         o.spd = options.spd;
         const RenderOptions special = resolveRenderOptions(scene, o);
-        o.effects = "all";
+        o.effects = EffectsMode::All;
         const RenderOptions general = resolveRenderOptions(scene, o);
         auto accel = makeAccelerator(special.accel, scene, special.accelOptions);
         const EffectSet es = analyseEffects(scene, special), eg = analyseEffects(scene, general);
