@@ -96,7 +96,8 @@ const char* const kRenderHelp =
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
     "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
-    "                           --threads defaults to the cores of a machine / its ranks\n"
+    "                           --threads defaults to the cores of a machine / its ranks; every\n"
+    "                           rank must read the same scene bytes and image flags (checked)\n"
     "\n"
     "SIGINT, SIGTERM and SIGHUP stop the render in any phase: temporaries are removed, earlier\n"
     "outputs are left as they were, exit code 128+signal (130, 143, 129).\n";
