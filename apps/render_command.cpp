@@ -24,6 +24,7 @@
 #include "apps/signals.h"
 #include "distributed/frame_sequence.h"
 #include "distributed/mpi_render.h"
+#include "distributed/rank_agreement.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/cancel.h"
 #include "renderer/effects.h"
@@ -96,7 +97,8 @@ const char* const kRenderHelp =
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
     "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
-    "                           --threads defaults to the cores of a machine / its ranks\n"
+    "                           --threads defaults to the cores of a machine / its ranks; every\n"
+    "                           rank must read the same scene bytes and image flags (checked)\n"
     "\n"
     "SIGINT, SIGTERM and SIGHUP stop the render in any phase: temporaries are removed, earlier\n"
     "outputs are left as they were, exit code 128+signal (130, 143, 129).\n";
@@ -284,6 +286,15 @@ int renderCommand(const std::vector<std::string>& args) {
         for (const std::string& file : {cli.exr, cli.png, cli.stats})
             if (!file.empty())
                 checkWritable(cli.frames ? sequenceFileName(file, frames.first) : file);
+    }
+    // Under mpirun every rank must render the same picture: rank 0 compares
+    // what each one read and resolved. Every rank knows the verdict, so all of
+    // them end normally (MPI finalised) and rank 0 alone says what differs.
+    if (const std::string why = compareRanks(mpi, renderIdentity(cli.scene, inputs.files(), options,
+                                                                 cli.frames, cli.triangulatePolygons));
+        !why.empty()) {
+        if (mpi.isRoot()) std::fprintf(stderr, "raylab: error: %s\n", terminalSafe(why).c_str());
+        return 1;
     }
 
     enterPhase(Phase::Build);

@@ -33,6 +33,28 @@ RankLoad readLoad(ByteReader& in, bool& cancelled) {
     return l;
 }
 
+void appendIdentity(const RenderIdentity& id, const std::string& host,
+                    std::vector<unsigned char>& out) {
+    ByteWriter w(out);
+    w.putString(id.scene);
+    w.put(id.files);
+    w.put(id.bytes);
+    w.put(id.sceneHash);
+    w.putString(id.settings);
+    w.putString(host);
+}
+
+RenderIdentity readIdentity(ByteReader& in, std::string& host) {
+    RenderIdentity id;
+    id.scene = in.getString();
+    id.files = in.get<uint32_t>();
+    id.bytes = in.get<uint64_t>();
+    id.sceneHash = in.get<uint64_t>();
+    id.settings = in.getString();
+    host = in.getString();
+    return id;
+}
+
 std::string rankName(int rank, const std::string& host) {
     return "rank " + std::to_string(rank) + (host.empty() ? "" : " (" + host + ")");
 }

@@ -2,7 +2,8 @@
 // The messages between rank 0 and the other ranks (docs/distributed.md, "How
 // a frame is shared"). Every message starts with the frame's epoch (the
 // number of renderDistributed calls so far), so a message from another frame
-// is caught; the item data itself is encoded by item_codec.h.
+// is caught (the rank agreement before the first frame uses epoch 0); the
+// item data itself is encoded by item_codec.h.
 
 #include <cstdint>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "distributed/byte_buffer.h"
 #include "distributed/load_report.h"
+#include "distributed/render_identity.h"
 
 namespace raylab {
 
@@ -21,6 +23,8 @@ enum MessageTag : int {
     kTagDone,              ///< worker -> 0: all its items sent; its load and counters
     kTagHeartbeat,         ///< worker -> 0: still alive, rendering a long chunk
     kTagAbort,             ///< 0 -> worker: the render was cancelled, stop
+    kTagIdentity,          ///< worker -> 0, before the first frame: what it renders
+    kTagVerdict,           ///< 0 -> worker: "" when every rank agrees, else what differs
 };
 
 /// A new message: its epoch, to which the body is appended.
@@ -31,6 +35,13 @@ void appendLoad(const RankLoad& load, bool cancelled, std::vector<unsigned char>
 
 /// Reads what appendLoad wrote (rank, finish time and rays are not sent).
 RankLoad readLoad(ByteReader& in, bool& cancelled);
+
+/// Appends what a rank renders (render_identity.h) and its host name.
+void appendIdentity(const RenderIdentity& identity, const std::string& host,
+                    std::vector<unsigned char>& out);
+
+/// Reads what appendIdentity wrote.
+RenderIdentity readIdentity(ByteReader& in, std::string& host);
 
 /// "rank 3" or "rank 3 (host)", for messages.
 std::string rankName(int rank, const std::string& host);

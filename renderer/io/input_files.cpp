@@ -1,5 +1,6 @@
 #include "renderer/io/input_files.h"
 
+#include "renderer/content_hash.h"
 
 namespace raylab {
 
@@ -28,12 +29,26 @@ std::vector<InputFile> InputFileLog::files() const {
 
 void InputFileLog::add(const std::string& path, const FileKey& key) {
     std::lock_guard<std::mutex> lock(m_mutex);
-    if (m_seen.insert(key).second) m_files.push_back({path, key});
+    if (m_index.emplace(key, m_files.size()).second) m_files.push_back({path, key});
+}
+
+void InputFileLog::addContent(const FileKey& key, uint64_t bytes, uint64_t contentHash) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const auto it = m_index.find(key);
+    if (it == m_index.end()) return;
+    m_files[it->second].bytes = bytes;
+    m_files[it->second].contentHash = contentHash;
 }
 
 void recordInputFile(const std::string& path, const struct stat& st) {
     std::lock_guard<std::mutex> lock(g_logsMutex);
     if (g_current) g_current->add(path, fileKeyOf(st));
+}
+
+void recordInputContent(const struct stat& st, std::string_view bytes) {
+    const uint64_t hash = contentHash(bytes);  // a pass over the file, outside the lock
+    std::lock_guard<std::mutex> lock(g_logsMutex);
+    if (g_current) g_current->addContent(fileKeyOf(st), bytes.size(), hash);
 }
 
 void recordInputFile(const std::string& path) {

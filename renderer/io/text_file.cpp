@@ -58,6 +58,7 @@ std::string readTextFile(const std::string& path, size_t maxBytes) {
         if (text.size() + size_t(n) > maxBytes) throw tooLarge(double(text.size() + size_t(n)));
         text.append(buffer, size_t(n));
     }
+    recordInputContent(st, text);  // what was read, for MPI ranks to compare
     return text;
 }
 

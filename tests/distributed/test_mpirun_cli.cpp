@@ -161,8 +161,7 @@ TEST_CASE("mpirun cli: --frames needs a camera_path" * kWithMpirun) {
     CHECK(usage.err.find("--frames: expected FIRST:LAST") != std::string::npos);
 }
 
-TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is written" *
-          kWithMpirun) {
+TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is written" * kWithMpirun) {
     const test::TempDir dir;
     // Rank 0 only serves (kRootServesOnly), so rank 1 gets the first chunk
     // however late it starts: on a loaded machine rank 0 could otherwise render
@@ -179,13 +178,95 @@ TEST_CASE("mpirun cli: a rank that stops answering is reported, nothing is writt
 
 TEST_CASE("mpirun cli: a killed rank ends the job, nothing is written" * kWithMpirun) {
     const test::TempDir dir;
-    const Run r = runCommand("RAYLAB_MPI_FAULT=kill:1 " + kRootServesOnly + mpirunRaylab(2) +
-                             " render " + demo() +
-                             " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
+    const Run r =
+        runCommand("RAYLAB_MPI_FAULT=kill:1 " + kRootServesOnly + mpirunRaylab(2) + " render " +
+                   demo() + " --width 64 --height 48 --threads 1 --quiet -o " + dir.file("x.exr"));
     CHECK(r.exitCode != 0);
     // Open MPI: "... exited on signal 9 (Killed)"; MPICH: "KILLED BY SIGNAL: 9".
     CHECK_MESSAGE((r.err.find("signal 9") != std::string::npos ||
                    r.err.find("SIGNAL: 9") != std::string::npos),
                   r.err);
     CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
+}
+
+namespace {
+
+/// An MPMD launch of two ranks: rank 0 runs `raylab <rank0>`, rank 1 `raylab <rank1>`.
+std::string mpirunTwoCommands(const std::string& rank0, const std::string& rank1) {
+    return mpirunRaylab(1) + " " + rank0 + " : -np 1 " + raylabBinary() + " " + rank1;
+}
+
+/// How many lines of `text` start with "raylab: error:".
+int errorLines(const std::string& text) {
+    int n = text.rfind("raylab: error:", 0) == 0;
+    for (size_t at = text.find("\nraylab: error:"); at != std::string::npos;
+         at = text.find("\nraylab: error:", at + 1))
+        ++n;
+    return n;
+}
+
+const std::string kAgreementAdvice =
+    "; every rank must render the same scene with the same options";
+
+}  // namespace
+
+TEST_CASE("mpirun cli: ranks launched with different scenes stop before rendering" * kWithMpirun) {
+    const test::TempDir dir;
+    const std::string primitives = std::string(RAYLAB_SOURCE_DIR) + "/scenes/primitives.json";
+    const std::string out = " --width 48 --height 32 --threads 1 --quiet -o " + dir.file("x.exr");
+    const Run r =
+        runCommand(mpirunTwoCommands("render " + demo() + out, "render " + primitives + out));
+    CHECK(r.exitCode == 1);
+    CHECK_MESSAGE(r.err.find("raylab: error: ranks disagree: rank 1 (") != std::string::npos,
+                  r.err);
+    CHECK_MESSAGE(r.err.find(") read other scene bytes than rank 0: " + primitives +
+                             " (1 file, ") != std::string::npos,
+                  r.err);
+    CHECK_MESSAGE(r.err.find(" against " + demo() + " (5 files, ") != std::string::npos, r.err);
+    CHECK(errorLines(r.err) == 1);  // rank 0 says it; rank 1 ends without a second line
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
+}
+
+TEST_CASE("mpirun cli: a mesh that differs between ranks is caught" * kWithMpirun) {
+    // Two folders with byte-identical scene files naming mesh.obj; the meshes
+    // differ in one digit (what two machines with unsynchronised copies see).
+    const test::TempDir dir;
+    const std::string scene = R"({"camera": {"eye": [0, 0, 4], "look_at": [0, 0, 0]},
+        "lights": [{"type": "point", "position": [2, 3, 4]}],
+        "objects": [{"type": "mesh", "file": "mesh.obj"}]})";
+    dir.write("a/scene.json", scene);
+    dir.write("b/scene.json", scene);
+    const std::string mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    dir.write("a/mesh.obj", mesh);
+    dir.write("b/mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 2 0\nf 1 2 3\n");
+    const std::string files =
+        " (2 files, " + std::to_string(scene.size() + mesh.size()) + " bytes)";
+    const std::string out = " --width 32 --height 24 --threads 1 --quiet -o " + dir.file("x.exr");
+    const Run r = runCommand(mpirunTwoCommands("render " + dir.file("a/scene.json") + out,
+                                               "render " + dir.file("b/scene.json") + out));
+    CHECK(r.exitCode == 1);
+    CHECK_MESSAGE(r.err.find("read other scene bytes than rank 0: " + dir.file("b/scene.json") +
+                             files + " against " + dir.file("a/scene.json") + files +
+                             kAgreementAdvice) != std::string::npos,
+                  r.err);
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
+}
+
+TEST_CASE("mpirun cli: ranks with other image settings stop; other thread counts agree" *
+          kWithMpirun) {
+    const test::TempDir dir;
+    const std::string render = "render " + demo() + " --height 32 --quiet -o " + dir.file("x.exr");
+    const Run wider = runCommand(mpirunTwoCommands(render + " --width 48", render + " --width 64"));
+    CHECK(wider.exitCode == 1);
+    CHECK_MESSAGE(wider.err.find("raylab: error: ranks disagree: rank 1 (") != std::string::npos,
+                  wider.err);
+    CHECK_MESSAGE(wider.err.find(") renders with width=64, rank 0 with width=48" +
+                                 kAgreementAdvice) != std::string::npos,
+                  wider.err);
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
+    // --threads does not change a pixel: the same render with 1 and 2 threads is one picture.
+    const Run threads = runCommand(
+        mpirunTwoCommands(render + " --width 48 --threads 1", render + " --width 48 --threads 2"));
+    CHECK_MESSAGE(threads.exitCode == 0, threads.err);
+    CHECK(std::filesystem::exists(dir.file("x.exr")));
 }
