@@ -1,37 +1,35 @@
 #include "renderer/io/file_lookup.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <system_error>
-#include <vector>
 
 namespace raylab {
 
 namespace {
 
-bool sameIgnoringCase(const std::string& a, const std::string& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
-        const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
-        return lower(x) == lower(y);
-    });
-}
-
-/// The entry of folder `dir` named `name` ignoring case, or "".
-std::string entryIgnoringCase(const std::filesystem::path& dir, const std::string& name) {
-    std::error_code ec;
-    std::vector<std::string> matches;
-    for (std::filesystem::directory_iterator it(dir.empty() ? "." : dir, ec), end;
-         !ec && it != end; it.increment(ec)) {
-        const std::string entry = it->path().filename().string();
-        if (sameIgnoringCase(entry, name)) matches.push_back(entry);
-    }
-    if (matches.empty()) return "";
-    return *std::min_element(matches.begin(), matches.end());
+std::string lower(std::string s) {
+    for (char& c : s)
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+    return s;
 }
 
 }  // namespace
 
-std::optional<FoundFile> findFile(const std::string& path) {
+const std::unordered_map<std::string, std::string>& FileFinder::listing(const std::string& folder) {
+    const auto known = m_listings.find(folder);
+    if (known != m_listings.end()) return known->second;
+    std::unordered_map<std::string, std::string> byLowerName;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(folder.empty() ? "." : folder, ec), end;
+         !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        auto [entry, added] = byLowerName.emplace(lower(name), name);
+        if (!added && name < entry->second) entry->second = name;
+    }
+    return m_listings.emplace(folder, std::move(byLowerName)).first->second;
+}
+
+std::optional<FoundFile> FileFinder::find(const std::string& path) {
     std::error_code ec;
     if (path.empty()) return std::nullopt;
     if (std::filesystem::exists(path, ec)) return FoundFile{path, false};
@@ -45,9 +43,10 @@ std::optional<FoundFile> findFile(const std::string& path) {
             resolved = exact;
             continue;
         }
-        const std::string entry = entryIgnoringCase(resolved, name);
-        if (entry.empty()) return std::nullopt;
-        resolved /= entry;
+        const auto& entries = listing(resolved.string());
+        const auto match = entries.find(lower(name));
+        if (match == entries.end()) return std::nullopt;
+        resolved /= match->second;
     }
     return FoundFile{resolved.string(), true};
 }

@@ -260,9 +260,10 @@ private:
             // On the file's coordinates: an affine transform changes no ear.
             triangles = triangulateFace(m_corners);
         } catch (const std::invalid_argument&) {
-            // Collinear or repeated corners: nothing to see.
-            m_warn.add("face has zero area (collinear or repeated corners); dropped", f.line, "",
-                       "dropped faces");
+            // Collinear or repeated corners, or a crossing outline with no net area.
+            m_warn.add("face encloses no area (collinear or repeated corners, or a crossing "
+                       "outline whose parts cancel); dropped",
+                       f.line, "", "dropped faces");
             return;
         }
         if (f.cornerCount > 3) checkCoverage(f, triangles);

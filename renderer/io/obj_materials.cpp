@@ -16,8 +16,10 @@ namespace {
 
 /// The files an mtllib statement names: the whole argument when a file of
 /// that name exists (names with blanks), else each blank-separated word.
-std::vector<std::string> libraryNames(const std::string& args, const std::string& objPath) {
-    if (findFile(resolveRelativeTo(objPath, args))) return {args};
+std::vector<std::string> libraryNames(const std::string& args, const std::string& objPath,
+                                      FileFinder& finder) {
+    if (args.find_first_of(" \t") == std::string::npos || finder.find(resolveRelativeTo(objPath, args)))
+        return args.empty() ? std::vector<std::string>{} : std::vector<std::string>{args};
     std::vector<std::string> names;
     std::string_view rest = args;
     for (std::string_view t = nextToken(rest); !t.empty(); t = nextToken(rest))
@@ -41,7 +43,7 @@ public:
         for (const ObjName& lib : data.libraries) {
             // 5000 statements naming one library cost one lookup each, not a read.
             if (!m_statements.insert(lib.name).second) continue;
-            const std::vector<std::string> names = libraryNames(lib.name, m_objPath);
+            const std::vector<std::string> names = libraryNames(lib.name, m_objPath, m_finder);
             if (names.empty())
                 m_warn.add("'mtllib' without a file name", lib.line);
             for (const std::string& name : names) library(name, lib.line);
@@ -65,7 +67,7 @@ public:
 private:
     void library(const std::string& name, int line) {
         const std::string path = resolveRelativeTo(m_objPath, name);
-        const std::optional<FoundFile> found = findFile(path);
+        const std::optional<FoundFile> found = m_finder.find(path);
         if (!found) {
             m_warn.add("material library '" + name +
                            "' not found beside the OBJ; its materials get the default material",
@@ -80,6 +82,8 @@ private:
         MtlLibrary lib = readMtl(found->path, m_warn);
         ++m_out.librariesRead;
         m_out.mtlLinesRead += lib.linesRead;
+        m_out.materials.reserve(m_out.materials.size() + lib.materials.size());
+        m_out.statements.reserve(m_out.statements.size() + lib.materials.size());
         for (MtlMaterial& m : lib.materials) {
             const auto [it, added] = m_index.emplace(m.name, uint32_t(m_out.materials.size()));
             if (!added) {
@@ -100,7 +104,7 @@ private:
     void findTextures(MtlMaterial& m, const std::string& libraryPath) {
         for (MtlTexture& t : m.textures) {
             const std::string path = resolveRelativeTo(libraryPath, t.file);
-            const std::optional<FoundFile> found = findFile(path);
+            const std::optional<FoundFile> found = m_finder.find(path);
             if (!found) {
                 m_warn.add("texture '" + t.file + "' not found beside the library", t.line,
                            libraryPath, "missing textures");
@@ -121,6 +125,7 @@ private:
     std::unordered_map<std::string, uint32_t> m_index;  ///< material name -> index
     std::unordered_set<std::string> m_read;             ///< libraries read
     std::unordered_set<std::string> m_statements;       ///< mtllib arguments handled
+    FileFinder m_finder;
 };
 
 }  // namespace
