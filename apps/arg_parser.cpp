@@ -65,6 +65,25 @@ double ArgParser::number(const std::string& flag, double lo, double hi) {
     return x;
 }
 
+std::array<double, 3> ArgParser::triple(const std::string& flag) {
+    const std::string v = value(flag);
+    std::array<double, 3> out{};
+    size_t start = 0;
+    for (size_t i = 0; i < 3; ++i) {
+        const size_t comma = v.find(',', start);
+        const bool last = i == 2;
+        const std::string part =
+            v.substr(start, (last || comma == std::string::npos) ? std::string::npos : comma - start);
+        char* end = nullptr;
+        out[i] = std::strtod(part.c_str(), &end);
+        if (part.empty() || startsWithSpace(part) || *end != '\0' || !std::isfinite(out[i]) ||
+            (!last && comma == std::string::npos))
+            throw UsageError(flag + ": expected three numbers X,Y,Z (got '" + v + "')");
+        start = comma + 1;
+    }
+    return out;
+}
+
 size_t ArgParser::choiceIndex(const std::string& flag, const std::vector<std::string>& words) {
     const std::string v = value(flag);
     std::string list;

@@ -2,6 +2,7 @@
 // A small, strict command-line parser: every value is validated, and any
 // problem is a raylab::UsageError (exit code 2) naming the flag.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -23,6 +24,8 @@ public:
     std::string value(const std::string& flag);
     long long integer(const std::string& flag, long long lo, long long hi);
     double number(const std::string& flag, double lo, double hi);
+    /// Three finite numbers written "X,Y,Z" (a point or a direction).
+    std::array<double, 3> triple(const std::string& flag);
     /// One of `choices`.
     std::string choice(const std::string& flag, const std::vector<std::string>& choices) {
         return choices[choiceIndex(flag, choices)];

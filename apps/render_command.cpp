@@ -28,6 +28,7 @@
 #include "renderer/accel/accelerator.h"
 #include "renderer/cancel.h"
 #include "renderer/effects.h"
+#include "renderer/first_look.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_writer.h"
@@ -37,6 +38,7 @@
 #include "renderer/io/output_names.h"
 #include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/io/text_file.h"
 #include "renderer/memory_limit.h"
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
@@ -82,6 +84,18 @@ const char* const kRenderHelp =
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
     "\n"
+    "camera (any scene type; each flag replaces the scene's value, the others are kept):\n"
+    "  --eye X,Y,Z              eye position\n"
+    "  --look-at X,Y,Z          the point at the image centre\n"
+    "  --camera-up X,Y,Z        up vector (need not be perpendicular to the view)\n"
+    "  --fov DEG                full vertical field of view in degrees, in (0, 180) (perspective)\n"
+    "\n"
+    "bare .obj scenes (framed by raylab: the silhouette fills about 80% of the image):\n"
+    "  --up x|y|z|-x|-y|-z      the model's up axis (default y; z for CAD models and terrains)\n"
+    "  --normals file|flat|smooth   shading normals: the file's vn, else averaged within each\n"
+    "                           smoothing group 's' (default); none; or the file's vn, else\n"
+    "                           averaged over the whole mesh\n"
+    "\n"
     "performance and accuracy:\n"
     "  --threads N              worker threads (default: all cores); the image does not depend on it\n"
     "  --accel embree|naive     Embree BVH (default) or the textbook loop over all objects\n"
@@ -112,7 +126,12 @@ struct RenderCli {
     bool quiet = false, floatPixels = false;
     double exposure = 0;
     RenderOverrides overrides;
+    CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
+    std::optional<Vec3> upAxis;  ///< --up (bare .obj)
+    std::optional<ObjNormals> normals;  ///< --normals (bare .obj)
 };
+
+Vec3 toVec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 /// Whether `path` ends in `ext` (".exr"), in any letter case.
 bool hasExtension(const std::string& path, const std::string& ext) {
@@ -155,9 +174,9 @@ std::string imageCommand(const std::vector<std::string>& args) {
 }
 
 /// loadScene, with an out-of-memory failure reported at the file being read.
-Scene loadSceneNamingFile(const std::string& path) {
+Scene loadSceneNamingFile(const std::string& path, const SceneLoadOptions& options) {
     try {
-        return loadScene(path);
+        return loadScene(path, options);
     } catch (const std::bad_alloc&) {
         const std::string file = fileBeingLoaded().empty() ? path : fileBeingLoaded();
         // The limit as set (what is left of it is about nothing by now).
@@ -206,6 +225,22 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--robust") o.robust = true;
         else if (a == "--precision") o.precision = p.choice(a, precisionNames());
         else if (a == "--epsilon") o.epsilon = p.number(a, 0, 1e30);
+        else if (a == "--eye") cli.camera.eye = toVec3(p.triple(a));
+        else if (a == "--look-at") cli.camera.lookAt = toVec3(p.triple(a));
+        else if (a == "--camera-up") cli.camera.up = toVec3(p.triple(a));
+        else if (a == "--fov") {
+            cli.camera.vfovDegrees = p.number(a, 0, 180);
+            if (!(*cli.camera.vfovDegrees > 0 && *cli.camera.vfovDegrees < 180))
+                throw UsageError("--fov: expected degrees in (0, 180) (got " +
+                                 std::to_string(*cli.camera.vfovDegrees) + ")");
+        }
+        else if (a == "--normals") {
+            const std::string v = p.choice(a, {"file", "flat", "smooth"});
+            cli.normals = v == "flat" ? ObjNormals::Flat
+                                      : v == "smooth" ? ObjNormals::Smooth : ObjNormals::File;
+        }
+        else if (a == "--up")
+            cli.upAxis = upAxisNamed(p.choice(a, {"x", "y", "z", "-x", "-y", "-z"}));
         else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());  // hidden: the general kernel
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (cli.scene.empty()) cli.scene = a;
@@ -213,6 +248,15 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     }
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
     if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
+    if (cli.upAxis && lowerExtension(cli.scene) != ".obj")
+        throw UsageError("--up: only a bare .obj scene is framed by raylab (got '" + cli.scene +
+                         "'); set the camera with --eye, --look-at and --camera-up");
+    if (cli.normals && lowerExtension(cli.scene) != ".obj")
+        throw UsageError("--normals: only for a bare .obj scene (a JSON mesh has the \"normals\" "
+                         "key)");
+    if (cli.frames && cli.camera.any())
+        throw UsageError("--eye, --look-at, --camera-up and --fov cannot be combined with "
+                         "--frames: the scene's camera_path sets every frame's camera");
     // Two names for one file would make one output overwrite another, or the scene.
     std::vector<InputFile> scene;
     struct stat st {};
@@ -225,6 +269,19 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     if (!cli.png.empty() && !hasExtension(cli.png, ".png"))
         throw UsageError("--png: the name must end in .png (got '" + cli.png + "')");
     return cli;
+}
+
+/// A bare .obj is framed for the image it will be rendered into: the up
+/// axis and the aspect of --width/--height (its own defaults otherwise).
+SceneLoadOptions sceneLoadOptions(const RenderCli& cli) {
+    SceneLoadOptions o;
+    if (cli.upAxis) o.up = *cli.upAxis;
+    if (cli.normals) o.normals = *cli.normals;
+    const ImageSettings defaults;
+    o.aspect = cli.overrides.spd ? 1.0  // SPD images are square
+                                 : double(cli.overrides.width.value_or(defaults.width)) /
+                                       double(cli.overrides.height.value_or(defaults.height));
+    return o;
 }
 
 void printSummary(const RenderStats& s, const std::string& exr, const std::string& png) {
@@ -258,7 +315,14 @@ int renderCommand(const std::vector<std::string>& args) {
 
     auto t0 = Clock::now();
     const InputFileLog inputs;  // every file read from here on (input_files.h)
-    Scene scene = loadSceneNamingFile(cli.scene);
+    Scene scene = loadSceneNamingFile(cli.scene, sceneLoadOptions(cli));
+    if (cli.camera.any()) {
+        try {
+            scene.camera = scene.camera.overridden(cli.camera);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--eye/--look-at/--camera-up/--fov: ") + e.what());
+        }
+    }
     if (cli.triangulatePolygons) triangulatePolygons(scene);
     RenderStats stats;
     stats.parseSeconds = secondsSince(t0);

@@ -56,9 +56,17 @@ std::unique_ptr<Shape> makePolygon(const PolygonParams& params);
 /// Largest polygon triangulatePolygon accepts (ear clipping is quadratic).
 constexpr size_t kMaxTriangulatedVertices = 16384;
 
-/// Triangulates a simple planar polygon (convex or concave) by ear clipping;
+/// Triangulates a simple polygon (convex or concave; a warped one on its
+/// Newell plane) by ear clipping;
 /// returns indices into `vertices`, wound like the polygon. Throws
 /// std::invalid_argument beyond kMaxTriangulatedVertices vertices.
 std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3>& vertices);
+
+/// Triangulates one mesh face (an OBJ `f`): a triangle as it is, a convex quad
+/// along its shorter diagonal, anything else (concave quads, n-gons) by
+/// triangulatePolygon. Indices are into `corners`, wound like the face.
+/// Throws std::invalid_argument like triangulatePolygon (collinear or fewer
+/// than 3 distinct corners, too many corners).
+std::vector<std::array<uint32_t, 3>> triangulateFace(const std::vector<Vec3>& corners);
 
 }  // namespace raylab

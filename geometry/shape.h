@@ -56,7 +56,7 @@ struct ShapeHit {
 /// derivatives cost trigonometry on spheres and cones, so the integrator asks
 /// for them only when an effect (textures, footprints) reads them.
 enum class SurfaceDetail {
-    Normals,   ///< p, ng, ns, frontFace, span
+    Normals,   ///< p, ng, ns, frontFace, span, color
     Complete,  ///< also uv, dpdu, dpdv, dndu, dndv
 };
 
@@ -72,6 +72,9 @@ struct SurfaceGeometry {
     /// vertex distance from p, a float-precision shape's distance from p to
     /// its bounds' centre, 0 for shapes intersected in double.
     double span = 0;
+    /// Colour of the surface point that multiplies the material's kd: a
+    /// mesh's interpolated vertex colours, white (1, 1, 1) for every other surface.
+    Vec3 color{1, 1, 1};
     // SurfaceDetail::Complete only (zero otherwise). docs/scene-format.md
     // documents each primitive's parametrisation.
     Vec2 uv;               ///< surface parameters, [0,1]² unless documented otherwise

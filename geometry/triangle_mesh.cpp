@@ -80,6 +80,7 @@ void TriangleMesh::validate() const {
     };
     sized(normals.size(), "normals");
     sized(uvs.size(), "texture coordinates");
+    sized(colors.size(), "vertex colours");
     // An out-of-range index would read garbage in either accelerator.
     for (size_t t = 0; t < triangles.size(); ++t)
         for (const uint32_t index : triangles[t])
@@ -177,6 +178,7 @@ SurfaceGeometry TriangleMesh::surfaceAt(uint32_t prim, const Ray& ray, const Sha
         if (isFinite(ns) && ns != Vec3{0, 0, 0}) g.ns = ns;
     }
     g.frontFace = dot(ray.d, g.ng) < 0;
+    if (hasColors()) g.color = colors[idx[0]] * w + colors[idx[1]] * u + colors[idx[2]] * v;
     if (detail == SurfaceDetail::Normals) return g;
 
     const Vec2 uv[3] = {hasUvs() ? uvs[idx[0]] : Vec2{0, 0}, hasUvs() ? uvs[idx[1]] : Vec2{1, 0},

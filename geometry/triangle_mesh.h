@@ -10,7 +10,8 @@
 // otherwise pbrt's default per-triangle (0,0), (1,0), (1,1), i.e.
 // uv = (b1 + b2, b2). dpdu/dpdv solve p - p2 = (uv - uv2)·[dpdu dpdv] over the
 // triangle; dndu/dndv are the derivatives of the normalised interpolated
-// vertex normal (zero for a flat triangle).
+// vertex normal (zero for a flat triangle). Vertex colours, when the mesh has
+// them, are interpolated like the normals into the surface record's colour.
 
 #include <array>
 #include <cstdint>
@@ -27,12 +28,14 @@ public:
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  ///< per-vertex, same size as positions, or empty
     std::vector<Vec2> uvs;      ///< per-vertex texture coordinates, same size, or empty
+    std::vector<Vec3> colors;   ///< per-vertex colour (OBJ "v x y z r g b"), same size, or empty
     std::vector<std::array<uint32_t, 3>> triangles;
 
     TriangleMesh() { m_sides = Sidedness::Both; }
 
     bool hasNormals() const { return !normals.empty(); }
     bool hasUvs() const { return !uvs.empty(); }
+    bool hasColors() const { return !colors.empty(); }
     size_t triangleCount() const { return triangles.size(); }
 
     uint32_t primitiveCount() const override { return uint32_t(triangles.size()); }

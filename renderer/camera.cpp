@@ -40,10 +40,24 @@ Camera Camera::perspective(const Vec3& eye, const Vec3& lookAt, const Vec3& up,
                                     std::to_string(vfovDegrees) + ")");
     Camera c;
     c.m_frame = makeFrame(eye, lookAt - eye, up);
+    c.m_lookAt = lookAt;
+    c.m_up = up;
     c.m_projection = Projection::Perspective;
     c.m_vfovDegrees = vfovDegrees;
     c.m_tanHalfFov = std::tan(0.5 * vfovDegrees * kPi / 180.0);
     return c;
+}
+
+Camera Camera::overridden(const CameraOverrides& o) const {
+    const Vec3 eye = o.eye.value_or(m_frame.eye);
+    const Vec3 lookAt = o.lookAt.value_or(m_lookAt);
+    const Vec3 up = o.up.value_or(m_up);
+    if (m_projection == Projection::Perspective)
+        return perspective(eye, lookAt, up, o.vfovDegrees.value_or(m_vfovDegrees));
+    if (o.vfovDegrees)
+        throw std::invalid_argument("camera: a field of view needs a perspective camera (the "
+                                    "scene's is orthographic)");
+    return orthographic(eye, lookAt - eye, up, m_viewWidth);
 }
 
 Camera Camera::orthographic(const Vec3& eye, const Vec3& direction, const Vec3& up,
@@ -53,6 +67,8 @@ Camera Camera::orthographic(const Vec3& eye, const Vec3& direction, const Vec3& 
                                     std::to_string(viewWidth) + ")");
     Camera c;
     c.m_frame = makeFrame(eye, direction, up);
+    c.m_lookAt = eye + direction;
+    c.m_up = up;
     c.m_projection = Projection::Orthographic;
     c.m_viewWidth = viewWidth;
     return c;

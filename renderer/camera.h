@@ -4,10 +4,21 @@
 // right, v up. Pixel (x, y) has its centre at (x + 0.5, y + 0.5); row 0 is the
 // top of the image.
 
+#include <optional>
+
 #include "geometry/ray.h"
 #include "geometry/vec.h"
 
 namespace raylab {
+
+/// Camera settings given on the command line (--eye, --look-at, --camera-up,
+/// --fov), each replacing the scene's value; unset ones keep it.
+struct CameraOverrides {
+    std::optional<Vec3> eye, lookAt, up;
+    std::optional<double> vfovDegrees;
+
+    bool any() const { return eye || lookAt || up || vfovDegrees; }
+};
 
 struct CameraFrame {
     Vec3 eye;
@@ -31,13 +42,25 @@ public:
     /// top-left corner, for an image of width × height pixels.
     Ray generateRay(double px, double py, int width, int height) const;
 
+    /// This camera with `o` applied: same projection, the given eye, look-at
+    /// point, up vector and field of view in place of its own. Throws
+    /// std::invalid_argument like the factories, and for a field of view on
+    /// an orthographic camera.
+    Camera overridden(const CameraOverrides& o) const;
+
     const CameraFrame& frame() const { return m_frame; }
+    /// The point the camera looks at (orthographic: eye + direction) and the
+    /// up vector it was built with.
+    const Vec3& lookAt() const { return m_lookAt; }
+    const Vec3& up() const { return m_up; }
     Projection projection() const { return m_projection; }
     double vfovDegrees() const { return m_vfovDegrees; }
     double viewWidth() const { return m_viewWidth; }
 
 private:
     CameraFrame m_frame;
+    Vec3 m_lookAt{0, 0, -1};
+    Vec3 m_up{0, 1, 0};
     Projection m_projection = Projection::Perspective;
     double m_vfovDegrees = 45;
     double m_tanHalfFov = 0.41421356237309503;  ///< tan(vfov / 2), once rather than per ray

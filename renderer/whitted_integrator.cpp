@@ -14,6 +14,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// The diffuse reflectance at a hit: kd times the surface's colour (a mesh's
+/// vertex colours; white, which leaves kd as it is, everywhere else).
+Color diffuseAt(const SurfaceInteraction& si, const Material& m) {
+    return m.kd * Color(si.color.x, si.color.y, si.color.z);
+}
+
 }  // namespace
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& accel,
@@ -54,6 +60,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
     } else {
         // SPD counts shadow rays even from surfaces without a local term.
         if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
+        const Color diffuse = diffuseAt(si, m);
         for (const Light& light : m_scene.lights) {
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
             double tMax;
@@ -73,7 +80,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             const SpawnedRay shadow = spawn(toLight);
             counters.count(RayType::Shadow, depth + 1);
             if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) continue;
-            result += lambert(m.kd, light.intensity, n, l);
+            result += lambert(diffuse, light.intensity, n, l);
             if constexpr ((E & kHighlights) != 0) {
                 if (!m_prune || !m.ks.isBlack())
                     result += m.highlight == Highlight::Phong
@@ -106,7 +113,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
         first->hit = true;
         first->distance = float(std::min(hit->t * length(ray.d), double(FLT_MAX)));
         first->normal = si.ns;
-        first->albedo = m.kd;
+        first->albedo = diffuseAt(si, m);
         first->objectId = float(si.object);
     }
 

@@ -10,7 +10,6 @@ required=(
   libembree-dev         # Embree 3: BVH build and traversal, user geometry
   libtbb-dev            # oneTBB: parallel tile loop
   libopenexr-dev        # OpenEXR: HDR output with AOV layers
-  libtinyobjloader-dev  # tinyobjloader: OBJ/MTL meshes
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview
   python3               # scripts/spd (SPD generators, NFF -> POV-Ray) and their tests

@@ -304,7 +304,7 @@ void SceneReader::readObject(const JsonValue& v, const std::string& path) {
     const size_t first = m_scene.objects.size();
     if (type == "mesh") {
         const JsonFields f(*this, v, path, "a mesh",
-                           {"type", "name", "file", "transform", "material", "sides"});
+                           {"type", "name", "file", "transform", "material", "sides", "normals"});
         readMeshFile(f, v.find("name") ? name : "");
         setSides(f, first);
         return;
@@ -400,6 +400,10 @@ void SceneReader::readMeshFile(const JsonFields& f, const std::string& name) {
     ObjLoadOptions options;
     if (const JsonValue* t = f.get("transform"))
         options.transform = readTransform(*t, f.path("transform"));
+    if (const JsonValue* n = f.get("normals"))
+        options.normals = choice<ObjNormals>(
+            *n, f.path("normals"),
+            {{"file", ObjNormals::File}, {"flat", ObjNormals::Flat}, {"smooth", ObjNormals::Smooth}});
     std::optional<uint32_t> override;
     if (const JsonValue* m = f.get("material")) override = resolveMaterial(m, f.path("material"));
 

@@ -1,68 +1,66 @@
 #include "renderer/io/mtl_material.h"
 
-#include <cmath>
 #include <string>
-
-#include "renderer/io/errors.h"
 
 namespace raylab {
 
 namespace {
-Color colorOf(const tinyobj::real_t c[3]) { return Color(c[0], c[1], c[2]); }
+/// The highlight exponent of a material without Ns: raylab's JSON default.
+constexpr double kDefaultShininess = 32;
+/// Kd of a material without Kd: raylab's default grey (black would hide the surface).
+constexpr double kDefaultDiffuse = 0.8;
 }  // namespace
 
-Material materialFromMtl(const tinyobj::material_t& m, size_t index,
-                         const MtlLibraryReader& libraries, LoadWarnings& warn) {
-    // Warnings and errors point at the MTL statement they are about.
-    const auto note = [&](std::initializer_list<const char*> keywords, const std::string& what) {
-        const auto [file, line] = libraries.locate(index, m.name, keywords);
-        warn.add("material '" + m.name + "': " + what, line, file);
-    };
+Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
+    // Warnings about a library hold once per file (LoadWarnings counts repeats).
+    const auto note = [&](int line, const std::string& what) { warn.add(what, line, m.file); };
     Material out;
     out.name = m.name;
-    out.ka = colorOf(m.ambient);
-    out.kd = colorOf(m.diffuse);
-    out.ks = colorOf(m.specular);
-    out.shininess = m.shininess;
-    int illum = m.illum;
+    out.kd = m.kd.given() ? m.kd.value : Color(kDefaultDiffuse);
+    // Without Ka, ambient light is reflected like the diffuse light (Ka = Kd):
+    // shadowed sides keep the surface's colour instead of going black.
+    out.ka = m.ka.given() ? m.ka.value : out.kd;
+    out.ks = m.ks.given() ? m.ks.value : Color(0);
+    out.shininess = m.ns.given() ? m.ns.value : kDefaultShininess;
+    out.ior = m.ni.given() && m.ni.value > 0 ? m.ni.value : 1.0;
+
+    // The MTL spec's default illumination model is 2 (highlights on); most
+    // exporters write none.
+    int illum = m.illum.given() ? m.illum.value : 2;
     if (illum < 0 || illum > 10) {
-        note({"illum"}, "illum " + std::to_string(illum) + " is unknown; read as illum 2");
+        warn.add("material '" + m.name + "': illum " + std::to_string(illum) +
+                     " is unknown; read as illum 2",
+                 m.illum.line, m.file, "unknown illum values");
         illum = 2;
     }
     if (illum == 0) out.ka = Color(0);
     if (illum <= 1) out.ks = Color(0);
-    if (illum >= 3 && illum <= 7) out.km = colorOf(m.specular);
-    if (illum == 4 || illum == 6 || illum == 7) {
-        const Color tf = colorOf(m.transmittance);
-        out.kt = !tf.isBlack() ? tf : Color(1.0 - double(m.dissolve));
-    } else if (m.dissolve < 1) {
-        note({"d", "Tr"}, "dissolve d < 1 is ignored with illum " + std::to_string(illum) +
-                              " (transparency needs illum 4, 6 or 7)");
+    // An exponent below 1 spreads the highlight over the whole lit side (Ns 0
+    // with Ks 0.9 paints it white): such a surface is matte.
+    if (m.ns.given() && m.ns.value < 1 && !out.ks.isBlack()) {
+        note(m.ns.line, "Ns below 1 makes the highlight cover the whole surface; read as no "
+                        "highlight (ks = 0)");
+        out.ks = Color(0);
     }
-    out.ior = m.ior > 0 ? m.ior : 1.0;
-    if (!m.diffuse_texname.empty() || !m.specular_texname.empty() || !m.bump_texname.empty() ||
-        !m.ambient_texname.empty() || !m.alpha_texname.empty())
-        note({"map_Kd", "map_Ks", "map_Ka", "map_d", "bump", "map_bump"},
-             "texture maps are not supported and are ignored");
-
-    const auto refuse = [&](std::initializer_list<const char*> keywords, const std::string& what) {
-        const auto [file, line] = libraries.locate(index, m.name, keywords);
-        return InputError(file, line, "material '" + m.name + "': " + what);
-    };
-    const auto bad = [](const Color& c) { return !c.isFinite() || c.r < 0 || c.g < 0 || c.b < 0; };
-    const char* const colourRule = ": colours must be finite and >= 0";
-    if (bad(out.ka)) throw refuse({"Ka"}, std::string("Ka") + colourRule);
-    if (bad(out.kd)) throw refuse({"Kd"}, std::string("Kd") + colourRule);
-    if (bad(out.ks) || bad(out.km)) throw refuse({"Ks"}, std::string("Ks") + colourRule);
-    // The transmission comes from Tf (or Kt), else from 1 - dissolve (d, Tr).
-    if (bad(out.kt)) {
-        if (!colorOf(m.transmittance).isBlack())
-            throw refuse({"Tf", "Kt"}, std::string("Tf") + colourRule);
-        throw refuse({"d", "Tr"}, "the dissolve d (or 1 - Tr) must be in [0, 1]");
+    if (illum >= 3 && illum <= 7) out.km = m.ks.given() ? m.ks.value : Color(0);
+    const bool transparent = illum == 4 || illum == 6 || illum == 7;
+    if (transparent) {
+        const bool tf = m.tf.given() && !m.tf.value.isBlack();
+        out.kt = tf ? m.tf.value : Color(1.0 - (m.dissolve.given() ? m.dissolve.value : 1.0));
+    } else {
+        if (m.dissolve.given() && m.dissolve.value < 1)
+            warn.add("material '" + m.name + "': dissolve d < 1 is ignored with illum " +
+                         std::to_string(illum) + " (transparency needs illum 4, 6 or 7)",
+                     m.dissolve.line, m.file, "ignored dissolves");
+        if (m.tf.given())
+            note(m.tf.line, "'Tf' (transmission filter) is only used with illum 4, 6 or 7; ignored");
     }
-    if (!(out.shininess >= 0 && std::isfinite(out.shininess)))
-        throw refuse({"Ns"}, "Ns must be finite and >= 0");
-    if (!std::isfinite(out.ior)) throw refuse({"Ni"}, "Ni must be finite");
+    if (m.ke.given() && !m.ke.value.isBlack())
+        note(m.ke.line, "'Ke' (emission) is not simulated by raylab; ignored");
+    for (const MtlTexture& t : m.textures)
+        warn.add("material '" + m.name + "': texture maps are not supported and are ignored (" +
+                     t.keyword + " " + t.file + ")",
+                 t.line, m.file, "texture maps");
     return out;
 }
 

@@ -1,18 +1,15 @@
 #pragma once
-// The MTL -> Whitted material policy: what each MTL statement means for
-// raylab's Material (Wavefront's illumination models, MTL spec):
-//   ka = Ka, kd = Kd, ks = Ks, shininess = Ns, ior = Ni (1 when Ni <= 0).
-//   illum 0     colour only: ka = 0, ks = 0
-//   illum 1     diffuse only: ks = 0
-//   illum 2     diffuse + Blinn-Phong highlight
-//   illum 3..7  "reflection: ray trace on": also mirror km = Ks
-//   illum 4,6,7 transparency/refraction: kt = Tf when Tf is given and not
-//               black, else kt = 1 - d (d = dissolve; "Tr t" means d = 1 - t)
-//   other illum values are read as illum 2. Textures are ignored (warning).
-
-#include <tiny_obj_loader.h>
-
-#include <cstddef>
+// The MTL -> Whitted material policy: what the statements of one MTL material
+// mean for raylab's Material. Each rule and its source is in
+// docs/scene-format.md ("OBJ and MTL"); in short:
+//   kd = Kd (0.8 when absent), ka = Ka (Kd when absent), ks = Ks,
+//   shininess = Ns (32 when absent), ior = Ni (1 when absent or <= 0).
+//   illum: absent -> 2; 0 colour only (ka = ks = 0); 1 diffuse (ks = 0);
+//          2 highlight; 3..7 also mirror km = Ks; 4, 6, 7 also
+//          kt = Tf when given and not black, else 1 - d; other values -> 2.
+//   Ns < 1: no highlight (ks = 0). Ke, Tf outside illum 4/6/7, d < 1 outside
+//   illum 4/6/7 and texture maps: warned about (once per library), ignored.
+// This is the one place a new MTL statement (a texture) turns into material data.
 
 #include "renderer/io/load_warnings.h"
 #include "renderer/io/mtl_reader.h"
@@ -20,9 +17,7 @@
 
 namespace raylab {
 
-/// The material for MTL material `index` (as the libraries read it). Warnings
-/// and errors (InputError) point at the MTL statement they are about.
-Material materialFromMtl(const tinyobj::material_t& m, size_t index,
-                         const MtlLibraryReader& libraries, LoadWarnings& warn);
+/// The material `m` means; warnings point at the statement they are about.
+Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn);
 
 }  // namespace raylab

@@ -1,129 +1,265 @@
 #include "renderer/io/mtl_reader.h"
 
-#include <sys/stat.h>
-
-#include <cerrno>
-#include <sstream>
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "renderer/io/errors.h"
-#include "renderer/io/obj_scan.h"
 #include "renderer/io/text_file.h"
-#include "renderer/io/tinyobj_messages.h"
+#include "renderer/io/wavefront_text.h"
 
 namespace raylab {
 
 namespace {
 
-/// The MTL text with the statements tinyobjloader misreads rewritten, line
-/// for line (line numbers stay valid): "d -halo X" becomes "d X" (it would
-/// read the dissolve as 0), and a colour with one value, "Kd 0.5", becomes
-/// "Kd 0.5 0.5 0.5" (the MTL rule: g = b = r; it would read 0.5 0 0, red).
-std::string normalizeMtl(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    size_t p = 0;
-    while (p <= text.size()) {
-        size_t eol = text.find('\n', p);
-        if (eol == std::string::npos) eol = text.size();
-        std::string line = text.substr(p, eol - p);
-        const size_t hash = line.find('#');  // a trailing comment is kept as it is
-        const std::string comment = hash == std::string::npos ? "" : " " + line.substr(hash);
-        std::istringstream in(line.substr(0, hash));
-        std::vector<std::string> tokens;
-        for (std::string t; in >> t;) tokens.push_back(t);
-        const bool colour =
-            !tokens.empty() && (tokens[0] == "Ka" || tokens[0] == "Kd" || tokens[0] == "Ks" ||
-                                tokens[0] == "Ke" || tokens[0] == "Tf" || tokens[0] == "Kt");
-        if (tokens.size() == 3 && tokens[0] == "d" && tokens[1] == "-halo")
-            line = "d " + tokens[2] + comment;
-        else if (colour && tokens.size() == 2)
-            line = tokens[0] + " " + tokens[1] + " " + tokens[1] + " " + tokens[1] + comment;
-        out += line;
-        if (eol < text.size()) out += '\n';
-        p = eol + 1;
-    }
+std::string lowerCase(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
     return out;
 }
 
-}  // namespace
-
-bool MtlLibraryReader::operator()(const std::string& matId,
-                                  std::vector<tinyobj::material_t>* materials,
-                                  std::map<std::string, int>* matMap, std::string* warn,
-                                  std::string*) {
-    const std::string path = resolveRelativeTo(m_objPath, matId);
-    struct stat st {};
-    // Only a library that is not there is a warning (the render goes on
-    // with the default material); one that is there but cannot be read
-    // is an error naming it.
-    if (::stat(path.c_str(), &st) != 0 && (errno == ENOENT || errno == ENOTDIR)) {
-        if (warn) *warn += "Material file [ " + matId + " ] not found\n";
-        return false;
-    }
-    Library lib;
-    lib.path = path;
-    lib.text = readTextFile(path);
-    if (const auto [line, message] = findNonText(lib.text, "MTL"); line > 0)
-        throw InputError(path, line, message);
-    const std::string normalized = normalizeMtl(lib.text);
-    if (const auto [line, message] = findBadNumber(normalized,
-                                                   {{"Ka", 3},
-                                                    {"Kd", 3},
-                                                    {"Ks", 3},
-                                                    {"Ke", 3},
-                                                    {"Tf", 3},
-                                                    {"Kt", 3},
-                                                    {"Ns", 1},
-                                                    {"Ni", 1},
-                                                    {"d", 1},
-                                                    {"Tr", 1},
-                                                    {"illum", 1}},
-                                                   false, {"spectral", "xyz"});
-        line > 0)
-        throw InputError(path, line, message);
-    lib.firstMaterial = materials->size();
-    std::istringstream in(normalized);
-    std::string mtlWarnings, mtlErrors;
-    tinyobj::LoadMtl(matMap, materials, &in, &mtlWarnings, &mtlErrors);
-    for (const std::string* text : {&mtlErrors, &mtlWarnings})
-        for (const std::string& m : splitMessages(*text)) {
-            const auto [line, message] = splitLineReference(m);
-            m_warnings.push_back({path, line, message});
-        }
-    lib.endMaterial = materials->size();
-    m_libraries.push_back(std::move(lib));
-    return true;
+/// Keywords of texture maps (MTL spec, plus the common bump/normal/PBR maps).
+bool isTextureKeyword(const std::string& k) {
+    static const std::unordered_set<std::string> kMaps = {
+        "map_ka", "map_kd", "map_ks", "map_ke", "map_ns", "map_d", "map_tr", "map_bump",
+        "bump", "disp", "decal", "refl", "norm", "map_pr", "map_pm", "map_ps", "map_rma",
+        "map_orm"};
+    return kMaps.count(k) > 0;
 }
 
-std::pair<std::string, int> MtlLibraryReader::locate(
-    size_t index, const std::string& name, std::initializer_list<const char*> keywords) const {
-    for (const Library& lib : m_libraries) {
-        if (index < lib.firstMaterial || index >= lib.endMaterial) continue;
-        int newmtl = 0, found = 0;
-        bool ended = false;
-        forEachStatement(
-            lib.text, [&](const std::string& k, const char* rest, const char* eol, int line) {
-                if (found || ended) return;
-                if (k == "newmtl") {
-                    if (newmtl) {
-                        ended = true;  // the block ended without any of `keywords`
-                        return;
-                    }
-                    // The name as tinyobjloader takes it: the rest of the
-                    // line after one blank, without trailing blanks.
-                    std::string n(rest < eol ? rest + 1 : eol, eol);
-                    while (!n.empty() && (n.back() == ' ' || n.back() == '\t' || n.back() == '\r'))
-                        n.pop_back();
-                    if (n == name) newmtl = line;
-                    return;
-                }
-                if (newmtl)
-                    for (const char* kw : keywords)
-                        if (k == kw) found = line;
-            });
-        return {lib.path, found ? found : newmtl};
+/// Options a texture statement may give before its file name, with their
+/// argument counts (-o, -s, -t take one to three numbers).
+int textureOptionArgs(std::string_view option) {
+    static const std::unordered_map<std::string_view, int> kArgs = {
+        {"-blendu", 1}, {"-blendv", 1}, {"-boost", 1},  {"-mm", 2},   {"-o", 3},
+        {"-s", 3},      {"-t", 3},      {"-texres", 1}, {"-clamp", 1}, {"-bm", 1},
+        {"-imfchan", 1}, {"-type", 1},  {"-cc", 1}};
+    const auto it = kArgs.find(option);
+    return it == kArgs.end() ? -1 : it->second;
+}
+
+/// Keywords raylab reads but does not simulate (physically based extensions,
+/// emission, sharpness, ...): one warning per keyword and file.
+const char* unsimulated(const std::string& k) {
+    static const std::unordered_map<std::string, const char*> kKeys = {
+        {"pr", "roughness (PBR)"},       {"pm", "metallic (PBR)"},
+        {"ps", "sheen (PBR)"},           {"pc", "clearcoat (PBR)"},
+        {"pcr", "clearcoat roughness (PBR)"}, {"aniso", "anisotropy (PBR)"},
+        {"anisor", "anisotropy rotation (PBR)"}, {"sharpness", "reflection sharpness"},
+        {"km", "bump multiplier"}};
+    const auto it = kKeys.find(k);
+    return it == kKeys.end() ? nullptr : it->second;
+}
+
+class MtlParser {
+public:
+    MtlParser(std::string_view text, const std::string& path, LoadWarnings& warn)
+        : m_text(text), m_path(path), m_warn(warn) {}
+
+    MtlLibrary parse() {
+        m_library.path = m_path;
+        StatementReader reader(m_text);
+        while (const auto s = reader.next()) statement(*s);
+        m_library.linesRead = reader.linesRead();
+        return std::move(m_library);
     }
-    return {m_objPath, 0};
+
+private:
+    [[noreturn]] void fail(int line, const std::string& message) const {
+        throw InputError(m_path, line, message);
+    }
+    /// An error about the current material's value.
+    [[noreturn]] void failValue(int line, const std::string& message) const {
+        fail(line, "material '" + current().name + "': " + message);
+    }
+    /// A warning that holds for the whole file: reported once, at its first line.
+    void warnOnce(int line, const std::string& message) { m_warn.add(message, line, m_path); }
+
+    MtlMaterial& current() { return m_library.materials.back(); }
+    const MtlMaterial& current() const { return m_library.materials.back(); }
+
+    void statement(const Statement& s) {
+        const std::string k = lowerCase(s.keyword);
+        if (k == "newmtl") return newMaterial(s);
+        if (m_library.materials.empty()) {
+            warnOnce(s.line, "statements before the first 'newmtl' belong to no material; ignored");
+            return;
+        }
+        if (k == "ka") return color(s, current().ka);
+        if (k == "kd") return color(s, current().kd);
+        if (k == "ks") return color(s, current().ks);
+        if (k == "ke") return color(s, current().ke);
+        if (k == "tf" || k == "kt") return color(s, current().tf);
+        if (k == "ns") {
+            const double ns = number(s);
+            if (ns < 0) failValue(s.line, "Ns must be >= 0 (got " + shown(ns) + ")");
+            current().ns = {ns, s.line};
+            return;
+        }
+        if (k == "ni") {
+            current().ni = {number(s), s.line};
+            return;
+        }
+        if (k == "d" || k == "tr") return dissolve(s, k == "d");
+        if (k == "illum") return illum(s);
+        if (isTextureKeyword(k)) return texture(s);
+        if (const char* what = unsimulated(k)) {
+            warnOnce(s.line, "'" + std::string(s.keyword) + "' (" + what +
+                                 ") is not simulated by raylab; ignored");
+            return;
+        }
+        warnOnce(s.line, "unknown MTL statement '" +
+                             terminalSafe(std::string(s.keyword.substr(0, 40))) + "' is ignored");
+    }
+
+    void newMaterial(const Statement& s) {
+        const std::string name(s.args);  // trimmed; inner blanks are part of the name
+        if (name.empty()) fail(s.line, "'newmtl' needs a material name");
+        MtlMaterial m;
+        m.name = name;
+        m.file = m_path;
+        m.line = s.line;
+        m_library.materials.push_back(std::move(m));
+    }
+
+    static std::string shown(double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.9g", v);
+        return buf;
+    }
+
+    /// Values are read at float precision, as tinyobjloader read them: the
+    /// pictures of files rendered before stay bit-identical.
+    static double asFloat(double v) { return double(float(v)); }
+
+    /// The numbers of a statement (at most `maxCount`), each finite.
+    int numbers(const Statement& s, std::string_view rest, double* out, int maxCount) {
+        int count = 0;
+        for (std::string_view t = nextToken(rest); !t.empty(); t = nextToken(rest)) {
+            const std::optional<double> x = parseNumber(t);
+            if (!x)
+                fail(s.line, "'" + std::string(s.keyword) + "': " + quotedToken(t) +
+                                 " is not a finite number");
+            if (count == maxCount)
+                fail(s.line, "'" + std::string(s.keyword) + "' takes at most " +
+                                 std::to_string(maxCount) + " numbers");
+            out[count++] = asFloat(*x);
+        }
+        return count;
+    }
+
+    /// A statement with exactly one number.
+    double number(const Statement& s) {
+        double x = 0;
+        const int n = numbers(s, withoutComment(s.args), &x, 1);
+        if (n != 1) fail(s.line, "'" + std::string(s.keyword) + "' needs 1 number, found none");
+        return x;
+    }
+
+    /// "K r g b", or "K r" for a grey (the MTL rule: g = b = r).
+    void color(const Statement& s, MtlValue<Color>& out) {
+        std::string_view rest = withoutComment(s.args);
+        std::string_view probe = rest;
+        const std::string_view first = nextToken(probe);
+        if (first == "spectral" || first == "xyz") {
+            warnOnce(s.line, "'" + std::string(s.keyword) + " " + std::string(first) +
+                                 "' colours are not supported; the statement is ignored");
+            return;
+        }
+        double x[3];
+        const int n = numbers(s, rest, x, 3);
+        if (n == 1) x[1] = x[2] = x[0];
+        else if (n != 3)
+            fail(s.line, "'" + std::string(s.keyword) + "' needs 3 numbers, found " +
+                             std::to_string(n));
+        if (x[0] < 0 || x[1] < 0 || x[2] < 0)
+            failValue(s.line, std::string(s.keyword) + ": colours must be finite and >= 0 (got " +
+                                  shown(x[0]) + " " + shown(x[1]) + " " + shown(x[2]) + ")");
+        out = {Color(x[0], x[1], x[2]), s.line};
+    }
+
+    /// d X, d -halo X, Tr X: one range, [0, 1], however it is spelt.
+    void dissolve(const Statement& s, bool isD) {
+        std::string_view rest = withoutComment(s.args);
+        std::string spelling = isD ? "d" : "Tr";
+        std::string_view probe = rest;
+        if (isD && nextToken(probe) == "-halo") {
+            // The halo form fades with the view angle; raylab reads its plain value.
+            rest = probe;
+            spelling = "d -halo";
+        }
+        double x = 0;
+        if (numbers(s, rest, &x, 1) != 1)
+            fail(s.line, "'" + spelling + "' needs 1 number, found none");
+        if (!(x >= 0 && x <= 1))
+            failValue(s.line, spelling + (isD ? " (dissolve)" : " (transparency, 1 - dissolve)") +
+                                  " must be in [0, 1] (got " + shown(x) + ")");
+        MtlMaterial& m = current();
+        if (m.dissolve.given() && (m.dissolveKeyword == "Tr") == isD) {
+            // Exporters that write both mean the same thing; d is the standard one.
+            warnOnce(s.line, "Both `d` and `Tr` parameters defined; the value of `d` is used");
+            if (!isD) return;
+        }
+        m.dissolve = {isD ? x : asFloat(1.0 - x), s.line};
+        m.dissolveKeyword = spelling;
+    }
+
+    void illum(const Statement& s) {
+        const double x = number(s);
+        if (x != std::floor(x) || std::fabs(x) > 1e9)
+            failValue(s.line, "illum takes an integer (got " + shown(x) + ")");
+        current().illum = {int(x), s.line};
+    }
+
+    /// map_Kd [-options ...] file: the options are kept as written; the file
+    /// name is the rest of the line (it may contain blanks).
+    void texture(const Statement& s) {
+        MtlTexture t;
+        t.keyword = std::string(s.keyword);
+        t.line = s.line;
+        std::string_view rest = s.args;
+        while (true) {
+            std::string_view probe = rest;
+            const std::string_view option = nextToken(probe);
+            const int args = textureOptionArgs(option);
+            if (args < 0) break;
+            // -o/-s/-t take one to three numbers; the others a fixed count.
+            for (int i = 0; i < args; ++i) {
+                std::string_view next = probe;
+                const std::string_view a = nextToken(next);
+                if (a.empty() || (i > 0 && (option == "-o" || option == "-s" || option == "-t") &&
+                                  !parseNumber(a)))
+                    break;
+                probe = next;
+            }
+            rest = probe;
+        }
+        const size_t optionsLength = size_t(rest.data() - s.args.data());
+        t.options = std::string(trimBlanks(s.args.substr(0, optionsLength)));
+        t.file = slashPath(trimBlanks(rest));
+        if (t.file.empty()) fail(s.line, "'" + t.keyword + "' needs a file name");
+        current().textures.push_back(std::move(t));
+    }
+
+    std::string_view m_text;
+    const std::string& m_path;
+    LoadWarnings& m_warn;
+    MtlLibrary m_library;
+};
+
+}  // namespace
+
+MtlLibrary parseMtl(std::string_view text, const std::string& path, LoadWarnings& warn) {
+    return MtlParser(text, path, warn).parse();
+}
+
+MtlLibrary readMtl(const std::string& path, LoadWarnings& warn) {
+    const std::string text = readTextFile(path);
+    if (const auto [line, message] = findNonText(text, "MTL"); line > 0)
+        throw InputError(path, line, message);
+    return parseMtl(text, path, warn);
 }
 
 }  // namespace raylab

@@ -279,6 +279,13 @@ private:
         return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
     }
 
+    /// "nan", "inf", "infinity" in any case: numbers, but not finite ones.
+    static bool looksNonFinite(std::string_view t) {
+        std::string lower;
+        for (char c : t.substr(0, 8)) lower += char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+        return lower == "nan" || lower == "inf" || lower == "infinity";
+    }
+
     static std::string formatNumber(double v) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.9g", v);
@@ -360,8 +367,11 @@ private:
         m_expected = "3 or 6 numbers (x y z [R G B])";
         NffLight l;
         l.position = vec3("light x", "light y", "light z");
+        // A colour starts with a number (or NaN/Inf, refused as a colour);
+        // anything else is the next entity, reported as such when it is not
+        // one rather than as a bad light colour.
         const std::string_view t = m_tok.peek();
-        if (!t.empty() && !isKeyword(t)) {
+        if (!t.empty() && (looksNumeric(t) || looksNonFinite(t))) {
             l.hasColor = true;
             l.color = color("light colour");
             if (l.color.r < 0 || l.color.g < 0 || l.color.b < 0)

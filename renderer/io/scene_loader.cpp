@@ -1,7 +1,9 @@
 #include "renderer/io/scene_loader.h"
 
-#include <cmath>
+#include <cstdio>
+#include <string>
 
+#include "renderer/first_look.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/loading_file.h"
 #include "renderer/io/obj_loader.h"
@@ -9,11 +11,19 @@
 
 namespace raylab {
 
-Scene loadScene(const std::string& path) {
+namespace {
+
+/// How far from the camera a framed model may reach: Embree traces
+/// coordinates within 1e18 of the camera (NUMERICS.md §1), with margin.
+constexpr double kMaxFramedDistance = 1e17;
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
     const LoadingFile loading(path);  // names the scene if its parse runs out of memory
     const std::string ext = lowerExtension(path);
     if (ext == ".json") return loadJsonScene(readTextFile(path), path);
-    if (ext == ".obj") return loadObjScene(path);
+    if (ext == ".obj") return loadObjScene(path, options);
     if (ext == ".nff") return loadNffScene(readTextFile(path), path);  // nff_loader.cpp
     if (ext.empty())
         throw InputError(path, 0,
@@ -21,38 +31,40 @@ Scene loadScene(const std::string& path) {
     throw InputError(path, 0, "unknown scene format '" + ext + "' (expected .json, .obj or .nff)");
 }
 
-Scene loadObjScene(const std::string& path) {
-    const ObjModel model = loadObj(path);
+Scene loadObjScene(const std::string& path, const SceneLoadOptions& options) {
+    ObjLoadOptions load;
+    load.normals = options.normals;
+    const ObjModel model = loadObj(path, load);
     Scene scene;
     scene.sourcePath = path;
     appendObjModel(scene, model, path);
 
+    std::vector<Vec3> points;
     Bounds3 box;
-    for (const ObjMeshPart& part : model.parts) box.expand(part.mesh->bounds());
-    const Vec3 centre = box.centre();
-    // Radius of the box's bounding sphere; a point-like mesh still gets a camera.
-    double radius = 0.5 * length(box.extent());
-    if (!(radius > 0)) radius = 1;
-
-    // Look at the centre from the front-right and slightly above, far enough
-    // that the bounding sphere fits the vertical field of view with a 5% margin
-    // (the image is at least as wide as it is tall in the default settings).
-    constexpr double kFovDegrees = 40;
-    constexpr double kPi = 3.14159265358979323846;
-    const Vec3 viewFrom = normalize(Vec3(1, 0.6, 1.5));
-    const double distance = 1.05 * radius / std::sin(0.5 * kFovDegrees * kPi / 180.0);
-    scene.camera =
-        Camera::perspective(centre + viewFrom * distance, centre, Vec3(0, 1, 0), kFovDegrees);
-
-    // Key light above and to the left of the camera, white; a dim ambient
-    // term so faces turned away from the key are not black.
-    Light key;
-    key.type = Light::Type::Point;
-    key.position = centre + normalize(Vec3(-0.5, 1.5, 1.2)) * (2 * distance);
-    key.intensity = Color(1, 1, 1);
-    scene.lights.push_back(key);
-    scene.ambient = Color(0.15, 0.15, 0.15);
-    scene.background = Color(0.1, 0.1, 0.12);
+    for (const ObjMeshPart& part : model.parts) {
+        points.insert(points.end(), part.mesh->positions.begin(), part.mesh->positions.end());
+        box.expand(part.mesh->bounds());
+    }
+    scene.camera = frameModel(points, options.up, options.aspect);
+    // The camera stands a few model sizes away: a model too large for that
+    // is refused here, by its size, rather than by the accelerator later.
+    const Vec3 eye = scene.camera.frame().eye;
+    const double reach = std::max(maxComponent(abs(box.lo - eye)), maxComponent(abs(box.hi - eye)));
+    if (!(reach <= kMaxFramedDistance)) {
+        const auto shown = [](double v) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.3g", v);
+            return std::string(buf);
+        };
+        throw InputError(path, 0,
+                         "the model is " + shown(maxComponent(box.extent())) +
+                             " units across; framed whole, it would lie " + shown(reach) +
+                             " from the camera, beyond the " + shown(kMaxFramedDistance) +
+                             " raylab traces: scale it down (a JSON scene's mesh \"transform\")");
+    }
+    scene.lights = studioLights(scene.camera);
+    scene.ambient = kFirstLookAmbient;
+    scene.background = kFirstLookBackground;
     return scene;
 }
 

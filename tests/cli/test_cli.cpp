@@ -138,3 +138,60 @@ TEST_CASE("cli: compare reports identical and differing renders; --polygons tria
     CHECK(cli::run("compare " + a).exitCode == 2);
     CHECK(cli::run("compare " + a + " " + dir.file("missing.exr")).exitCode == 1);
 }
+
+TEST_CASE("cli: camera overrides set the camera of any scene; --up and --normals frame a bare OBJ") {
+    cli::TempDir dir;
+    const std::string scene = dir.write("tiny.json", kTinyScene);
+    // The flags give the same picture as a scene whose camera says the same.
+    std::string moved = kTinyScene;
+    const std::string camera =
+        R"("camera": {"type": "perspective", "eye": [0, 1, 5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40})";
+    moved.replace(moved.find(camera), camera.size(),
+                  R"("camera": {"eye": [3, 1.5, 4], "look_at": [0, 0.25, 0], "up": [0.1, 1, 0], "fov": 30})");
+    const std::string reference = dir.write("moved.json", moved);
+    CHECK(cli::run("render " + reference + " -o " + dir.file("ref.exr") + " --quiet").exitCode == 0);
+    const cli::Result r =
+        cli::run("render " + scene + " -o " + dir.file("flags.exr") +
+                 " --quiet --eye 3,1.5,4 --look-at 0,0.25,0 --camera-up 0.1,1,0 --fov 30");
+    CHECK(r.exitCode == 0);
+    CHECK(cli::run("compare " + dir.file("ref.exr") + " " + dir.file("flags.exr")).exitCode == 0);
+    // And differ from the scene's own camera.
+    CHECK(cli::run("render " + scene + " -o " + dir.file("own.exr") + " --quiet").exitCode == 0);
+    CHECK(cli::run("compare " + dir.file("own.exr") + " " + dir.file("flags.exr")).exitCode != 0);
+
+    // A bare OBJ: a tall box standing on +z renders upright with --up z.
+    const std::string obj = dir.write(
+        "tower.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 4\nv 1 0 4\nv 1 1 4\nv 0 1 4\n"
+                     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    CHECK(cli::run("render " + obj + " -o " + dir.file("y.exr") + " --quiet --width 32 --height 24").exitCode == 0);
+    CHECK(cli::run("render " + obj + " -o " + dir.file("z.exr") +
+                   " --quiet --width 32 --height 24 --up z --normals smooth")
+              .exitCode == 0);
+    CHECK(cli::run("compare " + dir.file("y.exr") + " " + dir.file("z.exr")).exitCode != 0);
+
+    const cli::Result help = cli::run("render --help");
+    for (const char* flag : {"--eye X,Y,Z", "--look-at X,Y,Z", "--camera-up X,Y,Z", "--fov DEG",
+                             "--up x|y|z|-x|-y|-z", "--normals file|flat|smooth"})
+        CHECK_MESSAGE(help.out.find(flag) != std::string::npos, flag);
+}
+
+TEST_CASE("cli: bad camera overrides are usage errors, one line, exit 2") {
+    cli::TempDir dir;
+    const std::string scene = dir.write("tiny.json", kTinyScene);
+    const std::string obj = dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string out = " -o " + dir.file("o.exr");
+    for (const std::string& args :
+         {scene + out + " --eye 1,2", scene + out + " --eye 1,2,x", scene + out + " --eye 1,2,3,4",
+          scene + out + " --look-at ,1,2", scene + out + " --camera-up 1,nan,0",
+          scene + out + " --fov 0", scene + out + " --fov 180", scene + out + " --fov -5",
+          scene + out + " --eye 0,0,0 --look-at 0,0,0", scene + out + " --camera-up 0,0,0",
+          scene + out + " --up z", scene + out + " --normals smooth", obj + out + " --up w",
+          obj + out + " --up z --up y", scene + out + " --frames 1:2 --eye 1,2,3"}) {
+        CAPTURE(args);
+        const cli::Result r = cli::run("render " + args);
+        CHECK(r.exitCode == 2);
+        CHECK(cli::lineCount(r.err) == 1);
+        CHECK(r.err.rfind("raylab: error: ", 0) == 0);
+        CHECK_FALSE(fs::exists(dir.file("o.exr")));
+    }
+}

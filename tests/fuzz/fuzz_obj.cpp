@@ -1,7 +1,7 @@
 // libFuzzer target: the OBJ/MTL path. The input is split at the first line
 // "#MTL": the bytes before it become fuzz.obj, those after it fuzz.mtl, in a
 // scratch directory; the OBJ is then loaded the way `raylab render x.obj`
-// loads it (loadObjScene: tinyobjloader, our index checks, the MTL mapping,
+// loads it (loadObjScene: the OBJ and MTL parsers, the MTL mapping,
 // the auto-framed camera) and the scene goes through a tiny render.
 //
 // loadObjScene prints warnings to stderr; run with -close_fd_mask=2 to keep

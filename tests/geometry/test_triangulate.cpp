@@ -103,3 +103,49 @@ TEST_CASE("triangulate: invalid input") {
     CHECK_THROWS_AS(triangulatePolygon({{0, 0, 0}, {1, std::nan(""), 0}, {0, 1, 0}}),
                     std::invalid_argument);
 }
+
+TEST_CASE("triangulateFace: triangles as given, convex quads along the shorter diagonal") {
+    using Tris = std::vector<std::array<uint32_t, 3>>;
+    CHECK(triangulateFace({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}) == Tris{{0, 1, 2}});
+    // Diagonal 0-2 (length² 1 + 0.25) shorter than 1-3 (length² 4 + 1): split along it.
+    CHECK(triangulateFace({{0, 0, 0}, {1, 0, 0}, {1, 0.5, 0}, {-1, 1, 0}}) ==
+          Tris{{0, 1, 2}, {0, 2, 3}});
+    // The other way round (a kite: 0-2 has length² 9, 1-3 only 4), and a
+    // square (a tie) along 1-3, as tinyobjloader did.
+    CHECK(triangulateFace({{0, 0, 0}, {1, -1, 0}, {3, 0, 0}, {1, 1, 0}}) ==
+          Tris{{0, 1, 3}, {1, 2, 3}});
+    CHECK(triangulateFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}) ==
+          Tris{{0, 1, 3}, {1, 2, 3}});
+    // A concave quad (a dart, reflex at corner 2): only the diagonal 0-2 lies
+    // inside, although 1-3 is shorter; a fan from corner 1 would cover the notch.
+    const std::vector<Vec3> dart = {{0, 0, 0}, {2, 1, 0}, {0, 0.5, 0}, {-2, 1, 0}};
+    checkTriangulation(dart, 2);
+    for (const auto& t : triangulateFace(dart)) {
+        const bool usesDiagonal02 = (t[0] == 0 || t[1] == 0 || t[2] == 0) &&
+                                    (t[0] == 2 || t[1] == 2 || t[2] == 2);
+        CHECK(usesDiagonal02);
+    }
+    // A collinear corner on an axis-aligned L is removed exactly: 6 corners, 4 triangles.
+    const std::vector<Vec3> l = {{3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}, {0, 0, 0}, {1.5, 0, 0}};
+    CHECK(triangulateFace(l).size() == 4);
+    checkTriangulation(l, 4);
+    CHECK_THROWS_AS(triangulateFace({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}}), std::invalid_argument);
+}
+
+TEST_CASE("triangulatePolygon: a warped face is clipped on its Newell plane") {
+    // A concave hexagon whose corners alternate 0.4 above and below z = 0,
+    // seen from +z it is an L. Dropping the dominant axis projects it like
+    // its Newell plane does; the triangles must still cover the L's area
+    // once (measured in the xy plane) and face +z.
+    const std::vector<Vec3> warped = {{3, 0, 0.4}, {3, 1, -0.4}, {1, 1, 0.4},
+                                      {1, 3, -0.4}, {0, 3, 0.4}, {0, 0, -0.4}};
+    const auto tris = triangulatePolygon(warped);
+    REQUIRE(tris.size() == 4);
+    double area = 0;
+    for (const auto& t : tris) {
+        const Vec3 n = cross(warped[t[1]] - warped[t[0]], warped[t[2]] - warped[t[0]]);
+        CHECK(n.z > 0);
+        area += n.z / 2;
+    }
+    CHECK(area == doctest::Approx(5));  // the L: 3 + 2
+}

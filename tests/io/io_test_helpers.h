@@ -5,7 +5,11 @@
 #include <string>
 
 #include "geometry/triangle_mesh.h"
+#include "renderer/accel/accelerator.h"
+#include "renderer/effects.h"
 #include "renderer/io/errors.h"
+#include "renderer/render.h"
+#include "renderer/render_setup.h"
 #include "renderer/scene.h"
 #include "support/temp_dir.h"
 
@@ -35,6 +39,19 @@ inline bool contains(const std::string& haystack, const std::string& needle) {
 /// The triangle mesh behind a loaded object, or null for an analytic shape.
 inline const TriangleMesh* meshOf(const Object& o) {
     return o.shape ? o.shape->nativeTriangles() : nullptr;
+}
+
+/// Renders `scene` at width x height, one sample per pixel, with accelerator
+/// `accel` ("embree" or "naive"): the film with RGBA and the depth layer.
+inline Film renderFilm(const Scene& scene, const std::string& accel, int width, int height) {
+    RenderOverrides o;
+    o.width = width;
+    o.height = height;
+    o.spp = 1;
+    o.accel = accel;
+    const RenderOptions options = resolveRenderOptions(scene, o);
+    const auto a = makeAccelerator(options.accel, scene, options.accelOptions);
+    return render(scene, *a, options, analyseEffects(scene, options)).film;
 }
 
 }  // namespace raylab::test

@@ -299,7 +299,8 @@ TEST_CASE("obj: degenerate triangles, empty files and missing files") {
         dir.write("degen.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\nf 1 2 4\n"),
         quiet());
     CHECK(m.triangleCount() == 1);
-    CHECK(anyWarning(m, "dropped 2 degenerate (zero-area) triangles"));
+    // Reported at the first such face's line, with the count.
+    CHECK(anyWarning(m, "degen.obj:6: face has zero area; dropped (2 times)"));
 
     test::Failure f = failureOf([&] { loadObj(dir.write("empty.obj", "v 0 0 0\n"), quiet()); });
     CHECK(f.message == "the OBJ file has no faces");
@@ -315,30 +316,20 @@ TEST_CASE("obj: degenerate triangles, empty files and missing files") {
     CHECK(f.message == "cannot open: No such file or directory");
 }
 
-TEST_CASE("obj scene: camera framed on the bounds, key light and ambient") {
+TEST_CASE("obj scene: the silhouette framed to 80%, a key, fill and rim light, low ambient") {
     TempDir dir;
-    // Box [0,1] x [0,1] x {0}: centre (0.5, 0.5, 0), bounding-sphere radius √2 / 2.
     const Scene s = loadObjScene(dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
     CHECK(s.sourcePath == dir.file("tri.obj"));
     REQUIRE(s.objects.size() == 1);
     CHECK(test::meshOf(s.objects[0]) != nullptr);
     CHECK(s.camera.projection() == Camera::Projection::Perspective);
-    const Vec3 centre(0.5, 0.5, 0);
-    // The camera looks at the centre from direction (1, 0.6, 1.5).
+    CHECK(s.camera.vfovDegrees() == 40);
+    // Seen from (1, 0.6, 1.5) with +y up (renderer/first_look.h; its own tests check the fit).
     checkVec(s.camera.frame().w, normalize(Vec3(1, 0.6, 1.5)));
-    // Every corner of the box lies within half the vertical field of view of the view axis.
-    const Vec3 eye = s.camera.frame().eye;
-    const double halfFov = 0.5 * s.camera.vfovDegrees() * 3.14159265358979323846 / 180.0;
-    for (const Vec3& corner : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)}) {
-        const double cosAngle = dot(normalize(corner - eye), normalize(centre - eye));
-        CHECK(std::acos(std::min(1.0, cosAngle)) < halfFov);
-    }
-    // ... and not absurdly far: the sphere fills at least half the fov.
-    const double sphereAngle = std::asin((std::sqrt(2.0) / 2) / length(eye - centre));
-    CHECK(sphereAngle > 0.5 * halfFov);
-    REQUIRE(s.lights.size() == 1);
-    CHECK(s.lights[0].type == Light::Type::Point);
-    CHECK(s.lights[0].position.y > centre.y);  // a key light from above
+    CHECK(s.camera.up() == Vec3(0, 1, 0));
+    REQUIRE(s.lights.size() == 3);
+    for (const Light& l : s.lights) CHECK(l.type == Light::Type::Directional);
+    CHECK(s.ambient.maxComponent() < 0.1);
     CHECK(!s.ambient.isBlack());
     REQUIRE(s.materials.size() == 1);
     CHECK(s.materials[0].kd == Color(0.8, 0.8, 0.8));

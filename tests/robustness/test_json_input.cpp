@@ -269,3 +269,18 @@ TEST_CASE("json: a \\u0000 escape in a key is shown, not the end of the message"
             " \"objects\": [{\"type\": \"sphere\", \"rad\\u0000ius\": 1}]}\n",
             2, "objects[0].rad\\x00ius: unknown key");
 }
+
+TEST_CASE("json: a mesh scaled beyond float range says so, not \"zero area\" (issue 22)") {
+    // 1e200 times a unit triangle: finite in double, but beyond the float the
+    // renderer traces in; before, its overflowing areas read as "every face
+    // has zero area". Now the OBJ line of the first vertex moved too far.
+    TempDir dir;
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string path = dir.write(
+        "scene.json", scene(R"({"type": "mesh", "file": "tri.obj", "transform": {"scale": 1e200}})"));
+    const RunResult r = runRaylab(tinyRender(dir, path));
+    checkRefused(r, dir, {"scene.json", "tri.obj"}, 1, dir.file("tri.obj") + ":2:",
+                 "the mesh's transform (scale, rotate, translate) moves vertex 2 to (1e+200, 0, 0), "
+                 "beyond float range");
+    CHECK(!contains(r.err, "zero area"));
+}

@@ -163,3 +163,11 @@ TEST_CASE("nff: lights inside objects and other odd but valid scenes render") {
     rendered(kView + "s 0 0 -1e300 1e299\ns 1e-300 0 0 1e-300\n");
     rendered(kView + "p 3\n0 0 0\n1e-200 0 0\n0 1e-200 0\n");  // zero-area after squaring: dropped
 }
+
+TEST_CASE("nff: a light without colour followed by an unknown entity names the entity (issue 22)") {
+    // Before: "l: expected a number for light colour, got 'frobnicate'".
+    refused(kView + "l 1 2 3\nfrobnicate 1\n", 9, "unknown entity 'frobnicate'");
+    // A light colour that is not finite is still a light-colour error.
+    refused(kView + "l 1 2 3 nan 1 1\n", 8, "light colour must be a finite number");
+    rendered(kView + "l 1 2 3\ns 0 0 0 1\n");
+}

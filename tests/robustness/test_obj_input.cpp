@@ -253,3 +253,34 @@ TEST_CASE("obj: very long lines and huge faces neither hang nor crash") {
     // A 1 MB token on a vertex line.
     handled("v 0 0 0\nv 1 0 " + std::string(1 << 20, '9') + "\nv 0 1 0\nf 1 2 3\n");
 }
+
+TEST_CASE("obj: corners with an empty index are refused in raylab's words (issue 22)") {
+    // Before: tinyobjloader's "Failed parse `f' line(e.g. zero value for face index".
+    refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2/ 3/\n", 4,
+            "face corner '1/' has nothing after '/' (a corner is v, v/vt, v//vn or v/vt/vn)");
+    refused(kTriangle.substr(0, 24) + "vt 0 0\nf 1/1/ 2/1/ 3/1/\n", 5,
+            "has nothing after its second '/'");
+    refused(kTriangle.substr(0, 24) + "f /1 2 3\n", 4, "has no vertex index before '/'");
+    refused(kTriangle.substr(0, 24) + "f 1/1/1/1 2 3\n", 4, "has more than two '/'");
+}
+
+TEST_CASE("obj: a model too large to frame is refused by its size, not by a vertex at the origin "
+          "(issue 22)") {
+    // Before: "embree: object 'mesh.obj' (triangle mesh): vertex 0 is not finite or too far from
+    // the origin", vertex 0 being (0, 0, 0).
+    refused("v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nf 1 2 3\n", 0,
+            "the model is 1e+30 units across; framed whole, it would lie");
+}
+
+TEST_CASE("obj: MTL dissolve and transparency outside [0, 1] are refused in every spelling "
+          "(issue 22)") {
+    const std::string obj = "mtllib m.mtl\nusemtl a\n" + kTriangle;
+    for (const char* statement : {"d -1", "d -0.5", "d 1.5", "Tr 2", "Tr -1", "d -halo -1"}) {
+        CAPTURE(statement);
+        refused(obj, 3, "must be in [0, 1]",
+                {{"m.mtl", std::string("newmtl a\nillum 4\n") + statement + "\n"}}, "m.mtl");
+    }
+    // With an illum that ignores transparency too: one range, whatever the illum.
+    refused(obj, 3, "material 'a': Tr (transparency, 1 - dissolve) must be in [0, 1] (got 2)",
+            {{"m.mtl", "newmtl a\nillum 2\nTr 2\n"}}, "m.mtl");
+}
