@@ -8,6 +8,7 @@
 #include <string>
 
 #include "geometry/shape.h"
+#include "renderer/shadow_mode.h"
 
 namespace raylab {
 
@@ -17,6 +18,7 @@ struct RenderOverrides {
     std::optional<uint64_t> seed;
     std::optional<std::string> accel, bvhQuality, precision, effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
+    std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
     bool spd = false;
     bool robust = false;
 };

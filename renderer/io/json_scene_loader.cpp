@@ -107,7 +107,7 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
 void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "the render settings",
                        {"adaptive", "adaptive_levels", "min_weight", "seed", "precision", "epsilon",
-                        "bvh_quality", "robust", "accel"});
+                        "bvh_quality", "robust", "accel", "shadows"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -125,6 +125,9 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
         r.precision = choice<std::string>(*x, f.path("precision"),
                                           {{"float", "float"}, {"double", "double"}});
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
+    if (const JsonValue* x = f.get("shadows"))
+        r.shadows = choice<ShadowMode>(
+            *x, f.path("shadows"), {{"opaque", ShadowMode::Opaque}, {"filtered", ShadowMode::Filtered}});
     if (const JsonValue* x = f.get("bvh_quality"))
         r.bvhQuality = choice<std::string>(
             *x, f.path("bvh_quality"), {{"low", "low"}, {"medium", "medium"}, {"high", "high"}});
