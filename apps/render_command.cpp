@@ -102,6 +102,9 @@ const char* const kRenderHelp =
     "  --bvh-quality low|medium|high   Embree build quality (default medium)\n"
     "  --robust                 Embree's robust traversal (watertight triangle edges)\n"
     "  --precision float|double arithmetic of the analytic intersectors (default double)\n"
+    "  --shadows opaque|filtered  shadow feelers through transmitters: filtered (default) dims the\n"
+    "                           light by the kt of every transmitter crossed (no refraction of the\n"
+    "                           feeler); opaque blocks it, the classic Whitted shadow (and --spd's)\n"
     "  --epsilon E              lecture-style self-intersection avoidance: secondary rays accept\n"
     "                           t > E (default: robust offset along the normal, scaled to |p|)\n"
     "  --polygons watertight|projected|triangles   planar polygons: the watertight ray-space\n"
@@ -223,6 +226,7 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--accel") o.accel = p.choice(a, acceleratorNames());
         else if (a == "--bvh-quality") o.bvhQuality = p.choice(a, bvhQualityNames());
         else if (a == "--robust") o.robust = true;
+        else if (a == "--shadows") o.shadows = p.choice(a, shadowModeNames());
         else if (a == "--precision") o.precision = p.choice(a, precisionNames());
         else if (a == "--epsilon") o.epsilon = p.number(a, 0, 1e30);
         else if (a == "--eye") cli.camera.eye = toVec3(p.triple(a));
@@ -299,6 +303,9 @@ void printSummary(const RenderStats& s, const std::string& exr, const std::strin
                 (unsigned long long)s.rays.total(RayType::Shadow),
                 (unsigned long long)s.rays.total(RayType::Reflection),
                 (unsigned long long)s.rays.total(RayType::Refraction));
+    if (s.filter.attenuated > 0 || s.filter.cutOut > 0)
+        std::printf("  filter:   %llu transmitter crossings dimmed shadow rays, %llu candidates cut out\n",
+                    (unsigned long long)s.filter.attenuated, (unsigned long long)s.filter.cutOut);
     std::printf("  speed:    %.2f Mrays/s\n", s.mraysPerSecond());
     std::printf("  output:   %s%s%s\n", exr.c_str(), png.empty() ? "" : ", ", png.c_str());
 }
@@ -387,6 +394,7 @@ int renderCommand(const std::vector<std::string>& args) {
         ProgressBar bar(cli.frames ? "frame " + std::to_string(frame) : "rendering",
                         !cli.quiet && mpi.isRoot() && isatty(STDERR_FILENO));
         DistributedReport report;
+        const FilterCounts filterBefore = accel->filterCounts();
         RenderResult result = renderDistributed(mpi, scene, *accel, options, effects,
                                                 [&](double f) { bar.update(f); }, &g_interrupted,
                                                 &report);
@@ -408,6 +416,7 @@ int renderCommand(const std::vector<std::string>& args) {
         stats.spp = options.spp;
         stats.maxDepth = options.maxDepth;
         stats.nonFiniteSamples = result.nonFiniteSamples;
+        stats.filter = accel->filterCounts() - filterBefore;
 
         enterPhase(Phase::Write);
         t0 = Clock::now();

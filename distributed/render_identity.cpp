@@ -33,7 +33,7 @@ std::string optionWords(const RenderOptions& o) {
     add("adaptive", exact(o.adaptiveThreshold));
     add("adaptive_levels", std::to_string(o.adaptiveMaxLevel));
     add("seed", std::to_string(o.seed));
-    add("accel", o.accel);
+    add("accel", acceleratorName(o.accel));
     add("bvh_quality", bvhQualityName(o.accelOptions.quality));
     add("robust", o.accelOptions.robust ? "on" : "off");
     add("accel_origin", exact(o.accelOptions.origin));
@@ -46,6 +46,7 @@ std::string optionWords(const RenderOptions& o) {
     add("epsilon", exact(o.spawn.epsilon));
     add("spawn_reference", exact(o.spawn.reference));
     add("spd", o.spd ? "on" : "off");
+    add("shadows", shadowModeName(o.shadows));
     add("effects", o.forceAllEffects ? "all" : "auto");
     add("aovs", o.wantAovs ? "on" : "off");
     return s;

@@ -2,6 +2,7 @@
 
 #include "renderer/render_options.h"
 #include "renderer/scene.h"
+#include "renderer/surface_filter.h"
 
 namespace raylab {
 
@@ -14,6 +15,7 @@ std::vector<std::string> EffectSet::names() const {
     if (smoothNormals) n.push_back("smooth_normals");
     if (antialiasing) n.push_back("antialiasing");
     if (aovs) n.push_back("aovs");
+    if (filteredShadows) n.push_back("filtered_shadows");
     return n;
 }
 
@@ -44,6 +46,8 @@ EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
     for (const Object& o : scene.objects)
         if (o.shape && o.shape->hasShadingNormals()) e.smoothNormals = true;
     e.antialiasing = options.spp > 1 || options.adaptiveThreshold > 0;
+    e.filteredShadows = options.shadows == ShadowMode::Filtered && e.has(kShadows) &&
+                        SurfaceFilter(scene).active();
     e.aovs = options.wantAovs;
     return e;
 }

@@ -27,6 +27,9 @@ struct EffectSet {
     bool smoothNormals = false; ///< some mesh or polygon carries vertex normals
     bool antialiasing = false;  ///< spp > 1 or adaptive supersampling
     bool aovs = false;          ///< depth/normal/albedo/objectId layers requested
+    /// Shadow feelers pass through transmitters (ShadowMode::Filtered, and
+    /// some shaded surface can see a transmitter between it and a light).
+    bool filteredShadows = false;
 
     bool has(EffectBits b) const { return (kernel & b) != 0; }
     /// Names for the summary and --stats ("shadows", "reflection", ...).

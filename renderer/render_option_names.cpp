@@ -43,4 +43,9 @@ const OptionNames<EffectsMode>& effectsModeNames() {
     return names;
 }
 
+const OptionNames<ShadowMode>& shadowModeNames() {
+    static const auto names = tableOf({ShadowMode::Opaque, ShadowMode::Filtered}, shadowModeName);
+    return names;
+}
+
 }  // namespace raylab

@@ -13,6 +13,7 @@
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
 #include "renderer/render_overrides.h"
+#include "renderer/shadow_mode.h"
 
 namespace raylab {
 
@@ -29,6 +30,8 @@ const OptionNames<AccelOptions::BvhQuality>& bvhQualityNames();
 const OptionNames<Precision>& precisionNames();
 /// --effects: auto, all.
 const OptionNames<EffectsMode>& effectsModeNames();
+/// --shadows, "shadows": opaque, filtered.
+const OptionNames<ShadowMode>& shadowModeNames();
 
 /// "float" or "double" (the word of --precision).
 const char* precisionName(Precision precision);

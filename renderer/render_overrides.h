@@ -9,6 +9,7 @@
 #include "geometry/shape.h"
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
+#include "renderer/shadow_mode.h"
 
 namespace raylab {
 
@@ -27,6 +28,7 @@ struct RenderOverrides {
     std::optional<Precision> precision;
     std::optional<EffectsMode> effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
+    std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
     bool spd = false;
     bool robust = false;
 };

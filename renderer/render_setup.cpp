@@ -12,6 +12,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
         r.width = r.height = 512;
         r.maxDepth = 5;
         r.spp = 1;
+        r.shadows = ShadowMode::Opaque;  // Haines' statistics count opaque feelers
     }
     if (o.width) r.width = *o.width;
     if (o.height) r.height = *o.height;
@@ -27,6 +28,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.robust) r.accelOptions.robust = true;
     if (o.precision) r.accelOptions.intersect.precision = *o.precision;
     if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
+    if (o.shadows) r.shadows = *o.shadows;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;

@@ -138,6 +138,10 @@ std::string RenderStats::toJson() const {
     json.endObject();
 
     json.number("non_finite_samples", nonFiniteSamples);
+    json.beginObject("surface_filter");
+    json.number("cut_out_candidates", filter.cutOut);
+    json.number("attenuating_crossings", filter.attenuated);
+    json.endObject();
     json.endObject();
     return json.str();
 }

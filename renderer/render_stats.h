@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/filter_counts.h"
+
 namespace raylab {
 
 enum class RayType { Camera = 0, Shadow, Reflection, Refraction, Count };
@@ -61,6 +63,9 @@ struct RenderStats {
     std::string accel;
     int width = 0, height = 0, spp = 0, maxDepth = 0;
     uint64_t nonFiniteSamples = 0;  ///< samples whose radiance was NaN/Inf and was replaced
+    /// Candidate hits cut out and transmitter crossings of shadow feelers
+    /// (this process's accelerator: under mpirun, rank 0's share).
+    FilterCounts filter;
 
     /// Million rays (all types) per second of render time.
     double mraysPerSecond() const {

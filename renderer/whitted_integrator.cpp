@@ -79,13 +79,22 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
             counters.count(RayType::Shadow, depth + 1);
-            if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) continue;
-            result += lambert(diffuse, light.intensity, n, l);
+            // Filtered shadows: the light arrives dimmed by the transmitters
+            // on the way (no refraction of the feeler: an approximation).
+            Color arriving = light.intensity;
+            if (m_effects.filteredShadows) {
+                const Color through = m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
+                if (through.isBlack() || !facing) continue;
+                arriving = arriving * through;
+            } else if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) {
+                continue;
+            }
+            result += lambert(diffuse, arriving, n, l);
             if constexpr ((E & kHighlights) != 0) {
                 if (!m_prune || !m.ks.isBlack())
                     result += m.highlight == Highlight::Phong
-                                  ? phong(m.ks, m.shininess, light.intensity, n, l, toViewer)
-                                  : blinnPhong(m.ks, m.shininess, light.intensity, n, l, toViewer);
+                                  ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
+                                  : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
             }
         }
         return result;

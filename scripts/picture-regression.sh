@@ -9,7 +9,9 @@
 # Scenes: scenes/*.json, the bare OBJ meshes in scenes/meshes, and, when
 # ../shared is present, every SPD scene (with and without --spd, Embree at
 # full size and the naive loop at 96x96) and the shared OBJ models.
-# Extra flags for every render can be given in RAYLAB_FLAGS (e.g. --threads 2).
+# Extra flags for every render can be given in RAYLAB_FLAGS (e.g. --threads 2),
+# and flags for the new binary only in RAYLAB_NEW_FLAGS (e.g. a new flag that
+# must reproduce the old pictures, such as --shadows opaque).
 set -uo pipefail
 old=$(realpath "$1"); new=$(realpath "$2")
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -17,6 +19,7 @@ work=${3:-$(mktemp -d)}
 mkdir -p "$work/old" "$work/new"
 shared="$top/../shared"
 flags=${RAYLAB_FLAGS:-}
+newFlags=${RAYLAB_NEW_FLAGS:-}
 
 cases=()   # "name|scene|flags"
 for s in "$top"/scenes/*.json; do
@@ -54,9 +57,10 @@ printf '%-28s %-10s %-8s %s\n' case rgba exr-bytes flags
 for c in "${cases[@]}"; do
   IFS='|' read -r name scene extra <<<"$c"
   for side in old new; do
-    bin=$old; [[ $side == new ]] && bin=$new
+    bin=$old; sideFlags=
+    [[ $side == new ]] && bin=$new && sideFlags=$newFlags
     # Same relative output name on both sides, so headers that record it match.
-    (cd "$work/$side" && "$bin" render "$scene" -o "$name.exr" --quiet $extra $flags \
+    (cd "$work/$side" && "$bin" render "$scene" -o "$name.exr" --quiet $extra $flags $sideFlags \
         >"$name.log" 2>&1) || echo "render failed: $side $name (see $work/$side/$name.log)"
   done
   if "$new" compare "$work/old/$name.exr" "$work/new/$name.exr" >"$work/new/$name.compare" 2>&1; then

@@ -11,6 +11,8 @@
 #include "renderer/accel/accel_options.h"
 #include "renderer/accel/hit.h"
 #include "renderer/scene.h"
+#include "renderer/surface_filter.h"
+#include "shading/color.h"
 
 namespace raylab {
 
@@ -19,17 +21,25 @@ public:
     virtual ~Accelerator() = default;
     /// Closest hit with tMin < t < tMax.
     virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const = 0;
-    /// Any hit with tMin < t < tMax (shadow feelers).
+    /// Any hit with tMin < t < tMax (shadow feelers, opaque shadows).
     virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
+    /// \brief What a shadow feeler carries from tMin to tMax (filtered shadows):
+    ///   the product of the SurfaceFilter::transmission of every surface it
+    ///   crosses, black at the first opaque one. Without transmitters in the
+    ///   scene it is occluded() as black or white.
+    virtual Color transmittance(const Ray& ray, double tMin, double tMax) const = 0;
     /// "embree" or "naive".
     virtual std::string name() const = 0;
     /// Wall-clock seconds the constructor spent building the structure
     /// (Embree: geometry conversion and BVH, device creation excluded).
     virtual double buildSeconds() const = 0;
+    /// Candidate hits the surface filter cut out or attenuated so far.
+    virtual FilterCounts filterCounts() const = 0;
 };
 
 /// Builds the named accelerator ("embree" or "naive") over the scene, which
-/// must outlive it. Throws std::invalid_argument for an unknown name and for
+/// must outlive it; both honour the scene's SurfaceFilter (cut-outs,
+/// transmitters). Throws std::invalid_argument for an unknown name and for
 /// geometry the accelerator cannot take (validateShapes).
 std::unique_ptr<Accelerator> makeAccelerator(const std::string& name, const Scene& scene,
                                              const AccelOptions& options = {});

@@ -39,7 +39,7 @@ auto namingObject(const Object& object, F&& f) {
 
 EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& options,
                                      const std::string& deviceConfig)
-    : m_device(deviceConfig), m_origin(options.origin), m_scene(m_device) {
+    : m_device(deviceConfig), m_origin(options.origin), m_filter(scene), m_scene(m_device) {
     m_device.check("rtcNewScene");
     if (!isFinite(m_origin))
         throw std::invalid_argument("embree: accelerator origin must be finite");
@@ -65,8 +65,9 @@ void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality qual
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (!o.shape || o.shape->nativeTriangles()) continue;
+        const bool filtered = m_filter.filters(uint32_t(i));
         for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
-            m_user.entries.push_back({o.shape.get(), prim, uint32_t(i)});
+            m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), filtered});
             m_user.boxes.push_back(
                 namingObject(o, [&] { return toEmbreeBounds(o.shape->bounds(prim), m_origin); }));
         }
@@ -81,11 +82,15 @@ void EmbreeAccelerator::addTriangles(const Scene& scene, RTCBuildQuality quality
         const Object& o = scene.objects[i];
         const TriangleMesh* mesh = o.shape ? o.shape->nativeTriangles() : nullptr;
         if (!mesh) continue;
-        auto g = namingObject(
-            o, [&] { return attachTriangles(m_device, m_scene.get(), *mesh, m_origin, quality); });
-        if (!g) continue;
+        auto g = std::make_unique<EmbreeTriangleGeometry>();
+        g->object = uint32_t(i);
+        g->filtered = m_filter.filters(uint32_t(i));
+        g->origin = m_origin;
+        namingObject(o, [&] { attachTriangles(m_device, m_scene.get(), *mesh, quality, *g); });
+        if (g->geomId == RTC_INVALID_GEOMETRY_ID) continue;  // no triangle with area
         if (m_triangleGeoms.size() <= g->geomId) m_triangleGeoms.resize(g->geomId + 1);
-        m_triangleGeoms[g->geomId] = {uint32_t(i), std::move(g->triangleOfPrim)};
+        const unsigned id = g->geomId;
+        m_triangleGeoms[id] = std::move(g);
     }
 }
 
@@ -131,10 +136,9 @@ std::optional<Hit> EmbreeAccelerator::decode(const RTCRayHit& rayhit,
         const EmbreeUserTable::Entry& e = m_user.entries[rayhit.hit.primID];
         return Hit{rayhit.ray.tfar, e.object, e.prim, rayhit.hit.u, rayhit.hit.v};
     }
-    const TriangleGeometry& g = m_triangleGeoms[geomId];
-    const uint32_t triangle =
-        g.triangleOfPrim.empty() ? rayhit.hit.primID : g.triangleOfPrim[rayhit.hit.primID];
-    return Hit{rayhit.ray.tfar, g.object, triangle, rayhit.hit.u, rayhit.hit.v};
+    const EmbreeTriangleGeometry& g = *m_triangleGeoms[geomId];
+    return Hit{rayhit.ray.tfar, g.object, g.triangle(rayhit.hit.primID), rayhit.hit.u,
+               rayhit.hit.v};
 }
 
 std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
@@ -144,7 +148,7 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     EmbreeQueryContext ctx;
-    ctx.init(&ray, tMin, tMax);
+    initContext(ctx, &ray, tMin, tMax);
     rtcIntersect1(m_scene.get(), &ctx.rtc, &rayhit);
     return decode(rayhit, ctx);
 }
@@ -153,9 +157,31 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax) const
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
     EmbreeQueryContext ctx;
-    ctx.init(&ray, tMin, tMax);
+    initContext(ctx, &ray, tMin, tMax);
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     return r.tfar < 0.0f;
+}
+
+Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax) const {
+    if (!m_filter.active()) return occluded(ray, tMin, tMax) ? Color{} : Color(1.0);
+    RTCRay r;
+    if (!toEmbreeRay(ray, tMin, tMax, r)) return Color(1.0);
+    TransmittanceAccumulator shadow;
+    EmbreeQueryContext ctx;
+    initContext(ctx, &ray, tMin, tMax);
+    ctx.shadow = &shadow;
+    rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
+    // An opaque surface (filtered or not) ended the query; otherwise the
+    // filters let every crossing pass and collected it.
+    if (r.tfar < 0.0f) return Color{};
+    m_filter.countCrossings(shadow.size());
+    return shadow.product();
+}
+
+void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, double tMin,
+                                    double tMax) const {
+    ctx.init(ray, tMin, tMax);
+    if (m_filter.active()) ctx.filter = &m_filter;
 }
 
 std::unique_ptr<Accelerator> makeEmbreeAccelerator(const Scene& scene,

@@ -12,12 +12,14 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/accel/embree_device.h"
+#include "renderer/accel/embree_triangles.h"
 #include "renderer/accel/embree_user_geometry.h"
 #include "renderer/scene.h"
 
@@ -38,8 +40,10 @@ public:
 
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
     std::string name() const override { return "embree"; }
     double buildSeconds() const override { return m_buildSeconds; }
+    FilterCounts filterCounts() const override { return m_filter.counts(); }
 
     /// The committed scene, for bare rtcIntersect1/rtcOccluded1 replay.
     RTCScene rtcHandle() const { return m_scene.get(); }
@@ -63,23 +67,25 @@ public:
     ///   context carried no double ray.
     std::optional<Hit> decode(const RTCRayHit& rayhit, const EmbreeQueryContext& ctx) const;
 
+    /// \brief Prepares a context for one query of `ray` (may be null) over
+    ///   (tMin, tMax), with this accelerator's surface filter.
+    void initContext(EmbreeQueryContext& ctx, const Ray* ray, double tMin, double tMax) const;
+
 private:
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 
     // Declaration order = reverse destruction order: the scene goes first,
-    // then the table its callbacks point into, then the device.
+    // then the tables its callbacks point into, then the device.
     EmbreeDevice m_device;
     Vec3 m_origin;
+    SurfaceFilter m_filter;
     EmbreeUserTable m_user;
+    /// geomID -> triangle geometry (null for the user geometry); the
+    /// filter functions hold their addresses.
+    std::vector<std::unique_ptr<EmbreeTriangleGeometry>> m_triangleGeoms;
     EmbreeScene m_scene;
     unsigned m_userGeomId = RTC_INVALID_GEOMETRY_ID;
-    /// geomID -> object index and Embree primID -> triangle (triangle geometries).
-    struct TriangleGeometry {
-        uint32_t object = 0;
-        std::vector<uint32_t> triangleOfPrim;  ///< empty where they coincide
-    };
-    std::vector<TriangleGeometry> m_triangleGeoms;
     double m_buildSeconds = 0;
 };
 

@@ -23,12 +23,62 @@ void cullTriangleSide(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+/// Filters of meshes the surface filter looks at (cut-outs, transmitters),
+/// culling first as above. Intersection: a cut-out candidate is rejected.
+/// Occlusion: likewise; in a transmittance query (ctx.shadow) a transmitting
+/// candidate is collected and rejected, so traversal goes on behind it, and
+/// an opaque one is kept, which ends the query.
+template <bool Occlusion>
+void filterTriangles(const RTCFilterFunctionNArguments* args) {
+    const auto& g = *static_cast<const EmbreeTriangleGeometry*>(args->geometryUserPtr);
+    const EmbreeQueryContext& ctx = *reinterpret_cast<const EmbreeQueryContext*>(args->context);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        const float dx = RTCRayN_dir_x(args->ray, n, i), dy = RTCRayN_dir_y(args->ray, n, i),
+                    dz = RTCRayN_dir_z(args->ray, n, i);
+        if (g.sides != Sidedness::Both) {
+            const float facing = dx * RTCHitN_Ng_x(args->hit, n, i) +
+                                 dy * RTCHitN_Ng_y(args->hit, n, i) +
+                                 dz * RTCHitN_Ng_z(args->hit, n, i);
+            if ((facing < 0) != (g.sides == Sidedness::Outside)) {
+                args->valid[i] = 0;
+                continue;
+            }
+        }
+        if (!ctx.filter) continue;
+        const Ray ray = n == 1 && ctx.ray ? *ctx.ray
+                                          : Ray{Vec3{RTCRayN_org_x(args->ray, n, i),
+                                                     RTCRayN_org_y(args->ray, n, i),
+                                                     RTCRayN_org_z(args->ray, n, i)} +
+                                                    g.origin,
+                                                Vec3{dx, dy, dz}};
+        // Embree puts the candidate's distance in tfar while the filter runs.
+        const Hit candidate{RTCRayN_tfar(args->ray, n, i), g.object,
+                            g.triangle(RTCHitN_primID(args->hit, n, i)),
+                            RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i)};
+        if (ctx.filter->cutOut(ray, candidate)) {
+            args->valid[i] = 0;
+            continue;
+        }
+        if (Occlusion && ctx.shadow) {
+            const Color c = ctx.filter->transmission(ray, candidate);
+            if (c.isBlack()) {
+                ctx.shadow->block();
+            } else {
+                ctx.shadow->add(candidate.object, candidate.prim, candidate.t, c);
+                args->valid[i] = 0;
+            }
+        }
+    }
+}
+
 }  // namespace
 
-std::optional<EmbreeTriangleGeometry> attachTriangles(const EmbreeDevice& device, RTCScene scene,
-                                                      const TriangleMesh& mesh, const Vec3& origin,
-                                                      RTCBuildQuality quality) {
-    if (mesh.triangleCount() == 0) return std::nullopt;
+void attachTriangles(const EmbreeDevice& device, RTCScene scene, const TriangleMesh& mesh,
+                     RTCBuildQuality quality, EmbreeTriangleGeometry& out) {
+    if (mesh.triangleCount() == 0) return;
+    const Vec3& origin = out.origin;
     const size_t vertexCount = mesh.positions.size();
 
     EmbreeGeometry geom(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -65,28 +115,30 @@ std::optional<EmbreeTriangleGeometry> attachTriangles(const EmbreeDevice& device
         if (lengthSquared(cross(floatVertex(tri[1]) - a, floatVertex(tri[2]) - a)) > 0)
             kept.push_back(uint32_t(t));
     }
-    if (kept.empty()) return std::nullopt;
+    if (kept.empty()) return;
     auto* indices = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                 3 * sizeof(unsigned), kept.size()));
     device.check("rtcSetNewGeometryBuffer(INDEX)");
     for (size_t j = 0; j < kept.size(); ++j)
         for (int k = 0; k < 3; ++k) indices[3 * j + k] = mesh.triangles[kept[j]][k];
-    if (mesh.sidedness() != Sidedness::Both) {
-        const RTCFilterFunctionN cull = mesh.sidedness() == Sidedness::Outside
-                                            ? &cullTriangleSide<true>
-                                            : &cullTriangleSide<false>;
+    out.sides = mesh.sidedness();
+    if (kept.size() != mesh.triangleCount()) out.triangleOfPrim = std::move(kept);
+    if (out.filtered) {
+        rtcSetGeometryUserData(geom.get(), &out);
+        rtcSetGeometryIntersectFilterFunction(geom.get(), &filterTriangles<false>);
+        rtcSetGeometryOccludedFilterFunction(geom.get(), &filterTriangles<true>);
+    } else if (out.sides != Sidedness::Both) {
+        const RTCFilterFunctionN cull = out.sides == Sidedness::Outside ? &cullTriangleSide<true>
+                                                                        : &cullTriangleSide<false>;
         rtcSetGeometryIntersectFilterFunction(geom.get(), cull);
         rtcSetGeometryOccludedFilterFunction(geom.get(), cull);
     }
     rtcSetGeometryBuildQuality(geom.get(), quality);
     rtcCommitGeometry(geom.get());
     device.check("rtcCommitGeometry(TRIANGLE)");
-    EmbreeTriangleGeometry out;
     out.geomId = rtcAttachGeometry(scene, geom.get());
     device.check("rtcAttachGeometry(TRIANGLE)");
-    if (kept.size() != mesh.triangleCount()) out.triangleOfPrim = std::move(kept);
-    return out;
 }
 
 }  // namespace raylab

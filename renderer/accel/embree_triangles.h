@@ -13,22 +13,34 @@
 
 #include "geometry/triangle_mesh.h"
 #include "renderer/accel/embree_device.h"
+#include "renderer/accel/embree_user_geometry.h"
 
 namespace raylab {
 
+/// One uploaded mesh; also the user data of its filter functions, so it
+/// must stay at one address while the Embree scene lives.
 struct EmbreeTriangleGeometry {
     unsigned geomId = RTC_INVALID_GEOMETRY_ID;
+    uint32_t object = 0;    ///< index into Scene::objects
+    Sidedness sides = Sidedness::Both;
+    bool filtered = false;  ///< the surface filter decides about its candidates
+    Vec3 origin;            ///< to rebuild world rays from Embree's float lanes
     /// Embree primID -> mesh triangle, empty where they coincide (zero-area
     /// triangles are left out of Embree's copy).
     std::vector<uint32_t> triangleOfPrim;
+
+    uint32_t triangle(unsigned primID) const {
+        return triangleOfPrim.empty() ? primID : triangleOfPrim[primID];
+    }
 };
 
-/// \brief Uploads `mesh` (validated) and attaches it to `scene`.
-/// \return nothing when no triangle has area in float.
+/// \brief Uploads `mesh` (validated) and attaches it to `scene`, filling
+///   `out` (geomId stays invalid when no triangle has area in float). One-sided
+///   meshes get culling filter functions, filtered ones (out.filtered) the
+///   surface filter's as well.
 /// \throws std::invalid_argument "vertex I is not finite or too far from the
 ///   origin" (the caller names the object).
-std::optional<EmbreeTriangleGeometry> attachTriangles(const EmbreeDevice& device, RTCScene scene,
-                                                      const TriangleMesh& mesh, const Vec3& origin,
-                                                      RTCBuildQuality quality);
+void attachTriangles(const EmbreeDevice& device, RTCScene scene, const TriangleMesh& mesh,
+                     RTCBuildQuality quality, EmbreeTriangleGeometry& out);
 
 }  // namespace raylab

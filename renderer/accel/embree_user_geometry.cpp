@@ -33,6 +33,39 @@ Ray laneRay(RTCRayN* rays, unsigned n, unsigned i, const Vec3& origin) {
     return Ray{o + origin, d};
 }
 
+/// The first hit on the entry in (tMin, tMax) that the filter does not cut out.
+std::optional<ShapeHit> firstKeptHit(const EmbreeUserTable::Entry& e, const Ray& ray, double tMin,
+                                     double tMax, const IntersectOptions& opt,
+                                     const SurfaceFilter* filter) {
+    std::optional<ShapeHit> h = e.shape->intersect(e.prim, ray, tMin, tMax, opt);
+    if (!e.filtered || !filter) return h;
+    while (h && filter->cutOut(ray, Hit{h->t, e.object, e.prim, h->u, h->v}))
+        h = e.shape->intersect(e.prim, ray, h->t, tMax, opt);  // the next crossing
+    return h;
+}
+
+/// Whether a shadow feeler over (tMin, tMax) is stopped by a filtered entry.
+/// Opaque shadows (no accumulator): any kept crossing stops it. Filtered
+/// shadows: transmitting crossings are collected and let it pass.
+bool filteredEntryBlocks(const EmbreeUserTable::Entry& e, const Ray& ray, double tMin,
+                         double tMax, const IntersectOptions& opt, const SurfaceFilter& filter,
+                         TransmittanceAccumulator* shadow) {
+    for (double from = tMin;;) {
+        const auto h = e.shape->intersect(e.prim, ray, from, tMax, opt);
+        if (!h) return false;
+        from = h->t;
+        const Hit candidate{h->t, e.object, e.prim, h->u, h->v};
+        if (filter.cutOut(ray, candidate)) continue;
+        if (!shadow) return true;
+        const Color c = filter.transmission(ray, candidate);
+        if (c.isBlack()) {
+            shadow->block();
+            return true;
+        }
+        shadow->add(e.object, e.prim, h->t, c);
+    }
+}
+
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
     // Computed from Shape::bounds(prim) once at build time (where bad bounds
     // can still throw); the userPtr argument of rtcSetGeometryBoundsFunction is
@@ -66,11 +99,11 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
             const double tMax =
                 winsTies ? std::nextafter(ctx.bestT, std::numeric_limits<double>::infinity())
                          : ctx.bestT;
-            h = e.shape->intersect(e.prim, *ctx.ray, ctx.tMin, tMax, table.options);
+            h = firstKeptHit(e, *ctx.ray, ctx.tMin, tMax, table.options, ctx.filter);
             if (h && !(h->t < ctx.bestT || (winsTies && h->t == ctx.bestT))) continue;
         } else {
-            h = e.shape->intersect(e.prim, laneRay(rays, n, i, table.origin),
-                                   RTCRayN_tnear(rays, n, i), tfar, table.options);
+            h = firstKeptHit(e, laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i),
+                             tfar, table.options, ctx.filter);
         }
         if (!h) continue;
         // A triangle may already have shrunk tfar below this (double) hit.
@@ -107,13 +140,23 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     const EmbreeUserTable::Entry& e = table.entries[args->primID];
     const bool exact = n == 1 && ctx.ray != nullptr;
 
+    const bool filtered = e.filtered && ctx.filter;
+
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
         float& tfar = RTCRayN_tfar(rays, n, i);
-        const bool hit =
-            exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
-                  : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
-                                      RTCRayN_tnear(rays, n, i), tfar, table.options);
+        bool hit;
+        if (filtered) {
+            hit = exact ? filteredEntryBlocks(e, *ctx.ray, ctx.tMin, ctx.bestT, table.options,
+                                              *ctx.filter, ctx.shadow)
+                        : filteredEntryBlocks(e, laneRay(rays, n, i, table.origin),
+                                              RTCRayN_tnear(rays, n, i), tfar, table.options,
+                                              *ctx.filter, ctx.shadow);
+        } else {
+            hit = exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
+                        : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
+                                            RTCRayN_tnear(rays, n, i), tfar, table.options);
+        }
         if (hit) tfar = -kInfF;  // Embree's "occluded" marker
     }
 }

@@ -17,6 +17,8 @@
 #include "geometry/ray.h"
 #include "geometry/shape.h"
 #include "renderer/accel/embree_device.h"
+#include "renderer/accel/transmittance.h"
+#include "renderer/surface_filter.h"
 
 namespace raylab {
 
@@ -35,6 +37,12 @@ struct EmbreeQueryContext {
     double bestV = 0;
     uint32_t bestEntry = 0;  ///< its entry in the table
     bool exactHit = false;   ///< a hit was recorded from `ray`
+    /// Decides about candidates on filtered objects (cut-outs, transmitters),
+    /// or null: every candidate is a hit (bare replay).
+    const SurfaceFilter* filter = nullptr;
+    /// Set for a transmittance query: occlusion candidates on transmitters are
+    /// collected here instead of ending the query.
+    TransmittanceAccumulator* shadow = nullptr;
 
     /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
     void init(const Ray* r, double tMinimum, double tMax) {
@@ -45,6 +53,8 @@ struct EmbreeQueryContext {
         bestU = bestV = 0;
         bestEntry = 0;
         exactHit = false;
+        filter = nullptr;
+        shadow = nullptr;
     }
 };
 
@@ -54,6 +64,7 @@ struct EmbreeUserTable {
         const Shape* shape;
         uint32_t prim;
         uint32_t object;  ///< index into Scene::objects
+        bool filtered;    ///< the surface filter decides about its candidates
     };
     std::vector<Entry> entries;    ///< indexed by Embree's primID
     std::vector<RTCBounds> boxes;  ///< primID -> padded float box, relative to origin

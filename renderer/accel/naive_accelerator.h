@@ -2,7 +2,8 @@
 // The textbook accelerator (Nori's brute-force Accel): the list of scene
 // objects, each asked for its closest hit in turn (a mesh loops over its
 // triangles). O(N) per ray; the reference the Embree back end is checked
-// against and the baseline of the speed comparison.
+// against and the baseline of the speed comparison. Objects the surface
+// filter looks at (cut-outs, transmitters) are walked hit by hit.
 
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "geometry/ray.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/scene.h"
+#include "renderer/surface_filter.h"
 
 namespace raylab {
 
@@ -22,14 +24,20 @@ public:
 
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
     std::string name() const override { return "naive"; }
     double buildSeconds() const override { return m_buildSeconds; }
+    FilterCounts filterCounts() const override { return m_filter.counts(); }
 
 private:
+    /// Closest hit on object i that the filter does not cut out.
+    std::optional<Hit> filteredHit(uint32_t i, const Ray& ray, double tMin, double tMax) const;
+
     /// Every object's shape in scene order (null for an object without one):
     /// a compact list the loop walks without touching the objects.
     std::vector<const Shape*> m_shapes;
     IntersectOptions m_options;
+    SurfaceFilter m_filter;
     double m_buildSeconds = 0;
 };
 

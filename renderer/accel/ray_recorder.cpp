@@ -113,6 +113,18 @@ std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tM
 
 bool RayRecorder::occluded(const Ray& ray, double tMin, double tMax) const {
     const bool result = m_inner.occluded(ray, tMin, tMax);
+    recordShadowRay(ray, tMin, tMax, result);
+    return result;
+}
+
+Color RayRecorder::transmittance(const Ray& ray, double tMin, double tMax) const {
+    const Color result = m_inner.transmittance(ray, tMin, tMax);
+    // Replayed as an occlusion query: bare Embree has no filters.
+    recordShadowRay(ray, tMin, tMax, result.isBlack());
+    return result;
+}
+
+void RayRecorder::recordShadowRay(const Ray& ray, double tMin, double tMax, bool result) const {
     ThreadState& ts = m_threads.local();
     RecordedRay r;
     r.ray = ray;
@@ -130,7 +142,6 @@ bool RayRecorder::occluded(const Ray& ray, double tMin, double tMax) const {
         r.depth = ts.path[size_t(parent)].depth + 1;
     }
     ts.rays.push_back(r);
-    return result;
 }
 
 std::vector<RecordedRay> RayRecorder::takeRays() {

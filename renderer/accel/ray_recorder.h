@@ -8,7 +8,7 @@
 // the recorder derives it exactly from what the Whitted integrator does:
 //  - camera ray: its origin is the eye (perspective) or it runs along the view
 //    direction from the eye's plane (orthographic); it starts a new ray tree;
-//  - shadow ray: every occluded() query;
+//  - shadow ray: every occluded() and transmittance() query;
 //  - reflection / refraction: the parent is the hit whose spawnRay() origin
 //    (recomputed with the render's SpawnSettings) equals the new ray's origin
 //    bit for bit; the first child of a hit whose direction equals the
@@ -52,9 +52,12 @@ public:
 
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    /// Recorded as an occlusion query answered "occluded" when nothing gets through.
+    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
     /// The wrapped accelerator's name.
     std::string name() const override { return m_inner.name(); }
     double buildSeconds() const override { return m_inner.buildSeconds(); }
+    FilterCounts filterCounts() const override { return m_inner.filterCounts(); }
 
     /// \brief Every ray recorded since the last call, ray trees in row-major
     ///   order of their camera ray, each tree in tracing order; clears the buffers.
@@ -93,6 +96,7 @@ private:
     static long findParent(const std::vector<PathEntry>& path, const Ray& ray, double tMin,
                            const SpawnSettings& spawn);
     void pushHit(ThreadState& ts, const Ray& ray, const Hit& hit, int depth) const;
+    void recordShadowRay(const Ray& ray, double tMin, double tMax, bool occluded) const;
 
     const Accelerator& m_inner;
     const Scene& m_scene;

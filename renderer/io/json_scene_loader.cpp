@@ -108,7 +108,7 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
 void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "the render settings",
                        {"adaptive", "adaptive_levels", "min_weight", "seed", "precision", "epsilon",
-                        "bvh_quality", "robust", "accel"});
+                        "bvh_quality", "robust", "accel", "shadows"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -125,6 +125,8 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     if (const JsonValue* x = f.get("precision"))
         r.precision = choice(*x, f.path("precision"), precisionNames());
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
+    if (const JsonValue* x = f.get("shadows"))
+        r.shadows = choice(*x, f.path("shadows"), shadowModeNames());
     if (const JsonValue* x = f.get("bvh_quality"))
         r.bvhQuality = choice(*x, f.path("bvh_quality"), bvhQualityNames());
     if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));

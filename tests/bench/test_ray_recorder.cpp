@@ -38,6 +38,7 @@ RenderOptions optionsFor(const Scene& scene, int width, int height, int spp, int
     o.height = height;
     o.spp = spp;
     o.threads = threads;
+    o.shadows = ShadowMode::Opaque;  // what bare Embree can replay (bench limit does the same)
     return resolveRenderOptions(scene, o);
 }
 

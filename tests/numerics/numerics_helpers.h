@@ -125,8 +125,16 @@ public:
         m_queries.push_back(q);
         return q.occluded;
     }
+    Color transmittance(const Ray& ray, double tMin, double tMax) const override {
+        const Color c = m_inner.transmittance(ray, tMin, tMax);
+        Query q{ray, tMin, tMax, true, std::nullopt, c.isBlack()};
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_queries.push_back(q);
+        return c;
+    }
     std::string name() const override { return m_inner.name(); }
     double buildSeconds() const override { return m_inner.buildSeconds(); }
+    FilterCounts filterCounts() const override { return m_inner.filterCounts(); }
     const std::vector<Query>& queries() const { return m_queries; }
 
 private:

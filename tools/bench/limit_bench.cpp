@@ -164,6 +164,9 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     if (options.width > 0) o.width = options.width;
     if (options.height > 0) o.height = options.height;
     if (options.threads > 0) o.threads = options.threads;
+    // Bare Embree replays opaque shadow feelers; filtered ones run the
+    // surface filter's callbacks, which are work beyond traversal.
+    o.shadows = ShadowMode::Opaque;
     const RenderOptions renderOptions = resolveRenderOptions(scene, o);
     checkMemoryBudget(scene, renderOptions);
     const EffectSet effects = analyseEffects(scene, renderOptions);

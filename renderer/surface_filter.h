@@ -1,0 +1,50 @@
+#pragma once
+// Surfaces that let light through, as the accelerators see candidate hits:
+// alpha cut-outs (a hit where the mask is below the cut-off is no hit at all,
+// for every ray) and transmitters (a shadow feeler keeps their kt: filtered
+// shadows, Hall & Greenberg 1983). Built from the scene alone; an accelerator
+// asks it only about objects for which filters(object) is true, so a scene
+// without masks or transmitters costs nothing (docs/effects.md).
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/accel/hit.h"
+#include "renderer/filter_counts.h"
+#include "renderer/scene.h"
+#include "shading/color.h"
+
+namespace raylab {
+
+class SurfaceFilter {
+public:
+    explicit SurfaceFilter(const Scene& scene);
+
+    /// Whether any object needs the filter (else accelerators install none).
+    bool active() const { return m_active; }
+    /// Whether candidate hits on `object` must be shown to the filter.
+    bool filters(uint32_t object) const { return m_filtered[object] != 0; }
+
+    /// Whether the candidate is a hole: ignored by every ray, as if the
+    /// surface were not there.
+    bool cutOut(const Ray& ray, const Hit& candidate) const;
+    /// What a shadow feeler keeps of the light crossing the candidate: the
+    /// material's kt for a transmitter (no refraction of shadow rays), black
+    /// for an opaque surface.
+    Color transmission(const Ray& ray, const Hit& candidate) const;
+
+    /// A shadow feeler reached its light through `crossings` transmitters.
+    void countCrossings(uint64_t crossings) const { m_counts.local().attenuated += crossings; }
+    /// Counts since construction, summed over threads.
+    FilterCounts counts() const;
+
+private:
+    const Scene& m_scene;
+    std::vector<uint8_t> m_filtered;  ///< per object
+    bool m_active = false;
+    mutable tbb::enumerable_thread_specific<FilterCounts> m_counts;
+};
+
+}  // namespace raylab
