@@ -1,6 +1,8 @@
 #pragma once
 // Shared by the io tests: error capture (the scratch directory is support/temp_dir.h).
 
+#include <doctest/doctest.h>
+
 #include <functional>
 #include <string>
 
@@ -9,6 +11,7 @@
 #include "renderer/effects.h"
 #include "renderer/io/errors.h"
 #include "renderer/render.h"
+#include "renderer/render_option_names.h"
 #include "renderer/render_setup.h"
 #include "renderer/scene.h"
 #include "support/temp_dir.h"
@@ -48,7 +51,9 @@ inline Film renderFilm(const Scene& scene, const std::string& accel, int width, 
     o.width = width;
     o.height = height;
     o.spp = 1;
-    o.accel = accel;
+    for (const auto& [word, kind] : acceleratorNames())
+        if (word == accel) o.accel = kind;
+    REQUIRE(o.accel);
     const RenderOptions options = resolveRenderOptions(scene, o);
     const auto a = makeAccelerator(options.accel, scene, options.accelOptions);
     return render(scene, *a, options, analyseEffects(scene, options)).film;

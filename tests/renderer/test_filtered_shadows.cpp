@@ -68,10 +68,9 @@ Scene floorScene() {
 Color renderCentre(const Scene& s, const std::string& accelName,
                    std::optional<ShadowMode> shadows = std::nullopt) {
     RenderOverrides o;
-    o.accel = accelName;
     o.shadows = shadows;
     const RenderOptions opt = resolveRenderOptions(s, o);
-    auto accel = makeAccelerator(accelName, s, opt.accelOptions);
+    auto accel = makeAccelerator(accelName, s, opt.accelOptions);  // the name chooses, not o.accel
     const RenderResult r = render(s, *accel, opt, analyseEffects(s, opt));
     CHECK(r.nonFiniteSamples == 0);
     return {r.film.rgba[0], r.film.rgba[1], r.film.rgba[2]};
