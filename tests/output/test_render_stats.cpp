@@ -71,7 +71,11 @@ TEST_CASE("render stats: the whole JSON document") {
     "spp": 4,
     "max_depth": 5
   },
-  "non_finite_samples": 2
+  "non_finite_samples": 2,
+  "surface_filter": {
+    "cut_out_candidates": 0,
+    "attenuating_crossings": 0
+  }
 }
 )";
     CHECK(makeStats().toJson() == expected);
