@@ -44,6 +44,11 @@ std::string ArgParser::value(const std::string& flag) {
     return next();
 }
 
+std::string ArgParser::repeatableValue(const std::string& flag) {
+    if (done()) throw UsageError(flag + ": missing value");
+    return next();
+}
+
 long long ArgParser::integer(const std::string& flag, long long lo, long long hi) {
     const std::string v = value(flag);
     errno = 0;

@@ -22,6 +22,9 @@ public:
     /// The value after the flag `flag`, consumed (error when missing, or when
     /// the flag was given before: no silent "last one wins").
     std::string value(const std::string& flag);
+    /// The value after a flag that may be given several times, each use
+    /// adding one (-o: one output image per use), consumed.
+    std::string repeatableValue(const std::string& flag);
     long long integer(const std::string& flag, long long lo, long long hi);
     double number(const std::string& flag, double lo, double hi);
     /// Three finite numbers written "X,Y,Z" (a point or a direction).

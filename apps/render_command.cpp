@@ -26,6 +26,7 @@
 #include "distributed/mpi_render.h"
 #include "distributed/rank_agreement.h"
 #include "renderer/accel/accelerator.h"
+#include "renderer/camera_matrices.h"
 #include "renderer/cancel.h"
 #include "renderer/effects.h"
 #include "renderer/first_look.h"
@@ -35,6 +36,8 @@
 #include "renderer/io/file_identity.h"
 #include "renderer/io/input_files.h"
 #include "renderer/io/loading_file.h"
+#include "renderer/io/oiio_writer.h"
+#include "renderer/io/output_format.h"
 #include "renderer/io/output_names.h"
 #include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
@@ -43,31 +46,42 @@
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
 #include "renderer/render_option_names.h"
+#include "renderer/render_settings_text.h"
 #include "renderer/render_setup.h"
+#include "renderer/version.h"
 #include "renderer/timing.h"
 
 namespace raylab {
 
 const char* const kRenderHelp =
-    "usage: raylab render SCENE -o OUT.exr [options]\n"
+    "usage: raylab render SCENE -o OUT.exr [-o OUT.png ...] [options]\n"
     "\n"
-    "Renders SCENE (.json native format, .obj mesh alone, .nff Haines' NFF) to an OpenEXR file\n"
-    "with RGBA plus Z, N (normal), albedo and objectId layers. Flags override the scene's settings.\n"
+    "Renders SCENE (.json native format, .obj mesh alone, .nff Haines' NFF) to images. The EXR has\n"
+    "RGBA plus Z (planar depth), distance, N (normal), albedo, objectId and Cryptomatte object\n"
+    "mattes (docs/output.md). Flags override the scene's settings.\n"
     "\n"
     "output:\n"
-    "  -o, --output FILE.exr    OpenEXR output (required). Every output path is checked before the\n"
-    "                           render (one that is a file the render reads, or another output, is\n"
-    "                           refused); the files are written to temporary names and renamed only\n"
-    "                           once all are written, and put back if a rename fails, so a failed\n"
-    "                           write leaves existing files as they were (their mode is kept).\n"
-    "                           A symbolic link is followed (its target is replaced); a device,\n"
-    "                           FIFO or socket is refused\n"
-    "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
-    "  --exposure E             PNG exposure in stops (default 0)\n"
+    "  -o, --output FILE        an output image, its format by extension (at least one; repeat\n"
+    "                           for several): .exr (every layer), .png and .jpg/.jpeg (8-bit sRGB,\n"
+    "                           tone-mapped with --exposure), .hdr (Radiance, linear RGB),\n"
+    "                           .tif/.tiff (32-bit float linear RGBA). Every output path is checked\n"
+    "                           before the render (one that is a file the render reads, or another\n"
+    "                           output, is refused); the files are written to temporary names and\n"
+    "                           renamed only once all are written, and put back if a rename fails,\n"
+    "                           so a failed write leaves existing files as they were (their mode is\n"
+    "                           kept). A symbolic link is followed (its target is replaced); a\n"
+    "                           device, FIFO or socket is refused\n"
+    "  --png FILE.png           the same as -o FILE.png (a tone-mapped sRGB preview)\n"
+    "  --exposure E             exposure in stops of the 8-bit outputs (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
-    "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects)\n"
+    "  --alpha background|transparent|opaque   where camera rays miss: background (default)\n"
+    "                           keeps the background colour in RGB with A = object coverage;\n"
+    "                           transparent leaves it out (RGB premultiplied by A, for an \"over\");\n"
+    "                           opaque keeps it with A = 1\n"
+    "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects,\n"
+    "                           the objects with their objectId and Cryptomatte id)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
-    "                           (and PNG/stats files numbered alike)\n"
+    "                           (and every other output numbered alike)\n"
     "  --quiet                  no progress bar and no summary\n"
     "\n"
     "image:\n"
@@ -123,7 +137,8 @@ const char* const kRenderHelp =
 namespace {
 
 struct RenderCli {
-    std::string scene, exr, png, stats;
+    std::string scene, stats;
+    std::vector<OutputFlag> images;    ///< -o and --png, in the order given
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
     bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
@@ -136,18 +151,11 @@ struct RenderCli {
 
 Vec3 toVec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
-/// Whether `path` ends in `ext` (".exr"), in any letter case.
-bool hasExtension(const std::string& path, const std::string& ext) {
-    if (path.size() <= ext.size()) return false;
-    for (size_t i = 0; i < ext.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i])
-            return false;
-    return true;
-}
-
 /// The output flags of a render, for checkOutputNames.
 std::vector<OutputFlag> outputFlags(const RenderCli& cli) {
-    return {{"-o", cli.exr}, {"--png", cli.png}, {"--stats", cli.stats}};
+    std::vector<OutputFlag> flags = cli.images;
+    flags.push_back({"--stats", cli.stats});
+    return flags;
 }
 
 /// Refuses outputs that name one another or a file the render reads (all of
@@ -156,24 +164,6 @@ void checkOutputs(const RenderCli& cli, const std::vector<InputFile>& inputs) {
     const OutputFrames numbering{cli.frames ? cli.frames->first : 1,
                                  cli.frames ? cli.frames->last : 1, sequenceFileName};
     checkOutputNames(outputFlags(cli), cli.frames ? &numbering : nullptr, inputs);
-}
-
-/// The command recorded in the EXR header: what defines the image, without
-/// what does not (output names, --threads, --quiet, the PNG's --exposure), so
-/// that the same render writes the same bytes however it is run.
-std::string imageCommand(const std::vector<std::string>& args) {
-    std::string command = "raylab render";
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "-o" || a == "--output" || a == "--png" || a == "--stats" || a == "--threads" ||
-            a == "--exposure") {
-            ++i;  // and its value
-            continue;
-        }
-        if (a == "--quiet" || a == "-q") continue;
-        command += " " + a;
-    }
-    return command;
 }
 
 /// loadScene, with an out-of-memory failure reported at the file being read.
@@ -201,8 +191,9 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         if (a == "-h" || a == "--help") {
             std::fputs(kRenderHelp, stdout);
             std::exit(0);
-        } else if (a == "-o" || a == "--output") cli.exr = p.value(a);
-        else if (a == "--png") cli.png = p.value(a);
+        } else if (a == "-o" || a == "--output") cli.images.push_back({"-o", p.repeatableValue(a)});
+        else if (a == "--png") cli.images.push_back({"--png", p.repeatableValue(a)});
+        else if (a == "--alpha") o.alpha = p.choice(a, alphaModeNames());
         else if (a == "--stats") cli.stats = p.value(a);
         else if (a == "--frames") cli.frames = parseFrameRange(p.value(a));
         else if (a == "--polygons") {
@@ -251,7 +242,8 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else throw UsageError("unexpected argument '" + a + "' (one scene per render)");
     }
     if (cli.scene.empty()) throw UsageError("render: missing SCENE (see 'raylab render --help')");
-    if (cli.exr.empty()) throw UsageError("render: missing -o OUT.exr");
+    if (cli.images.empty())
+        throw UsageError(std::string("render: missing -o OUT (") + outputExtensionList() + ")");
     if (cli.upAxis && lowerExtension(cli.scene) != ".obj")
         throw UsageError("--up: only a bare .obj scene is framed by raylab (got '" + cli.scene +
                          "'); set the camera with --eye, --look-at and --camera-up");
@@ -266,12 +258,16 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     struct stat st {};
     if (::stat(cli.scene.c_str(), &st) == 0) scene.push_back({cli.scene, fileKeyOf(st)});
     checkOutputs(cli, scene);
-    // A PNG or anything else named .exr (or the reverse) is a typing mistake
-    // that would only show up when another program opens the file.
-    if (!hasExtension(cli.exr, ".exr"))
-        throw UsageError("-o writes OpenEXR: the name must end in .exr (got '" + cli.exr + "')");
-    if (!cli.png.empty() && !hasExtension(cli.png, ".png"))
-        throw UsageError("--png: the name must end in .png (got '" + cli.png + "')");
+    // The format is the extension's: a name without a known one is a typing
+    // mistake that would only show up when another program opens the file.
+    for (const OutputFlag& image : cli.images) {
+        const std::optional<OutputFormat> format = outputFormatOf(image.path);
+        if (image.flag == "--png" && format != OutputFormat::Png)
+            throw UsageError("--png: the name must end in .png (got '" + image.path + "')");
+        if (!format)
+            throw UsageError(image.flag + ": the format is chosen by the extension, one of " +
+                             outputExtensionList() + " (got '" + image.path + "')");
+    }
     return cli;
 }
 
@@ -288,7 +284,7 @@ SceneLoadOptions sceneLoadOptions(const RenderCli& cli) {
     return o;
 }
 
-void printSummary(const RenderStats& s, const std::string& exr, const std::string& png) {
+void printSummary(const RenderStats& s, const std::vector<std::string>& outputs) {
     std::printf("raylab: %dx%d, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
                 s.height, s.spp, s.maxDepth, s.accel.c_str(), s.threads,
                 (unsigned long long)s.primitives);
@@ -307,7 +303,9 @@ void printSummary(const RenderStats& s, const std::string& exr, const std::strin
         std::printf("  filter:   %llu transmitter crossings dimmed shadow rays, %llu candidates cut out\n",
                     (unsigned long long)s.filter.attenuated, (unsigned long long)s.filter.cutOut);
     std::printf("  speed:    %.2f Mrays/s\n", s.mraysPerSecond());
-    std::printf("  output:   %s%s%s\n", exr.c_str(), png.empty() ? "" : ", ", png.c_str());
+    std::string list;
+    for (const std::string& o : outputs) list += (list.empty() ? "" : ", ") + o;
+    std::printf("  output:   %s\n", list.c_str());
 }
 
 }  // namespace
@@ -354,9 +352,9 @@ int renderCommand(const std::vector<std::string>& args) {
     // now, not after a long render.
     checkOutputs(cli, inputs.files());
     if (mpi.isRoot()) {
-        for (const std::string& file : {cli.exr, cli.png, cli.stats})
-            if (!file.empty())
-                checkWritable(cli.frames ? sequenceFileName(file, frames.first) : file);
+        for (const OutputFlag& output : outputFlags(cli))
+            if (!output.path.empty())
+                checkWritable(cli.frames ? sequenceFileName(output.path, frames.first) : output.path);
     }
     // Under mpirun every rank must render the same picture: rank 0 compares
     // what each one read and resolved. Every rank knows the verdict, so all of
@@ -417,22 +415,44 @@ int renderCommand(const std::vector<std::string>& args) {
         stats.maxDepth = options.maxDepth;
         stats.nonFiniteSamples = result.nonFiniteSamples;
         stats.filter = accel->filterCounts() - filterBefore;
+        std::vector<std::string> objectNames;
+        for (const Object& object : scene.objects) objectNames.push_back(object.name);
+        stats.objects.clear();
+        for (size_t k = 0; k < objectNames.size(); ++k)
+            stats.objects.push_back(matteName(objectNames, int(k)));
 
         enterPhase(Phase::Write);
         t0 = Clock::now();
+        // What defines the image, never how it was run (threads, output
+        // names): the same render writes the same bytes.
         ExrOptions exr;
         exr.floatPixels = cli.floatPixels;
-        exr.commandLine = imageCommand(args);
+        exr.software = raylabSoftware();
+        exr.settings = renderSettingsText(options);
+        exr.alpha = alphaModeName(options.alpha);
         exr.spp = options.spp;
         exr.maxDepth = options.maxDepth;
         exr.threads = options.threads;
         exr.scenePath = cli.scene;
         exr.accel = acceleratorName(options.accel);
+        exr.frame = cli.frames ? frame : 0;
+        exr.camera = cameraMatrices(scene.camera, options.width, options.height);
+        exr.objectNames = objectNames;
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.
         AtomicFileGroup files;
-        writeExr(output(cli.exr), result.film, exr, &files);
-        if (!cli.png.empty()) writePng(output(cli.png), result.film, cli.exposure, &files);
+        std::vector<std::string> written;
+        for (const OutputFlag& image : cli.images) {
+            const std::string file = output(image.path);
+            switch (*outputFormatOf(image.path)) {
+                case OutputFormat::Exr: writeExr(file, result.film, exr, &files); break;
+                case OutputFormat::Png: writePng(file, result.film, cli.exposure, &files); break;
+                default:
+                    writeOiioImage(file, result.film, *outputFormatOf(image.path), cli.exposure,
+                                   raylabSoftware(), &files);
+            }
+            written.push_back(file);
+        }
         stats.writeSeconds = secondsSince(t0);
         if (!cli.stats.empty()) writeFileAtomically(output(cli.stats), stats.toJson(), &files);
         enterPhase(Phase::Commit);
@@ -446,7 +466,7 @@ int renderCommand(const std::vector<std::string>& args) {
                                 " and later not");
 
         if (!cli.quiet) {
-            printSummary(stats, output(cli.exr), output(cli.png));
+            printSummary(stats, written);
             std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
         }
     }

@@ -10,11 +10,12 @@ namespace raylab {
 
 namespace {
 
-// Per pixel: rgba (4) + depth (1) + normal (3) + albedo (3) + objectId (1) floats.
-constexpr size_t kPixelBytes = 12 * sizeof(float);
-// Per corner: colour (3 doubles), hit (1 byte), distance (float),
+// Per pixel: rgba (4) + z (1) + distance (1) + normal (3) + albedo (3) +
+// objectId (1) floats, and the Cryptomatte ranks.
+constexpr size_t kPixelBytes = 13 * sizeof(float) + kMatteRanks * sizeof(MatteEntry);
+// Per corner: colour (3 doubles), hit (1 byte), distance and depth (floats),
 // normal (3 doubles), albedo (3 doubles), objectId (float).
-constexpr size_t kCornerBytes = 3 * 8 + 1 + 4 + 3 * 8 + 3 * 8 + 4;
+constexpr size_t kCornerBytes = 3 * 8 + 1 + 4 + 4 + 3 * 8 + 3 * 8 + 4;
 
 /// Writes into bytes already allocated: one resize per item instead of one
 /// per value (the codec runs on the MPI thread, between messages).
@@ -65,6 +66,7 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
                 w.put(s.c.b);
                 w.put(uint8_t(s.first.hit ? 1 : 0));
                 w.put(s.first.distance);
+                w.put(s.first.depth);
                 w.put(s.first.normal.x);
                 w.put(s.first.normal.y);
                 w.put(s.first.normal.z);
@@ -82,10 +84,12 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
         for (int x = r.x0; x < r.x1; ++x) {
             const size_t i = f.index(x, y);
             w.putBytes(&f.rgba[4 * i], 4 * sizeof(float));
-            w.putBytes(&f.depth[i], sizeof(float));
+            w.putBytes(&f.z[i], sizeof(float));
+            w.putBytes(&f.distance[i], sizeof(float));
             w.putBytes(&f.normal[3 * i], 3 * sizeof(float));
             w.putBytes(&f.albedo[3 * i], 3 * sizeof(float));
             w.putBytes(&f.objectId[i], sizeof(float));
+            w.putBytes(&f.mattes[i * kMatteRanks], kMatteRanks * sizeof(MatteEntry));
         }
     }
     assert(w.position() == out.data() + out.size());
@@ -111,6 +115,7 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
                     s.c.b = in.get<double>();
                     s.first.hit = in.get<uint8_t>() != 0;
                     s.first.distance = in.get<float>();
+                    s.first.depth = in.get<float>();
                     s.first.normal.x = in.get<double>();
                     s.first.normal.y = in.get<double>();
                     s.first.normal.z = in.get<double>();
@@ -126,10 +131,12 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
                 for (int x = r.x0; x < r.x1; ++x) {
                     const size_t i = f.index(x, y);
                     in.getBytes(&f.rgba[4 * i], 4 * sizeof(float));
-                    in.getBytes(&f.depth[i], sizeof(float));
+                    in.getBytes(&f.z[i], sizeof(float));
+                    in.getBytes(&f.distance[i], sizeof(float));
                     in.getBytes(&f.normal[3 * i], 3 * sizeof(float));
                     in.getBytes(&f.albedo[3 * i], 3 * sizeof(float));
                     in.getBytes(&f.objectId[i], sizeof(float));
+                    in.getBytes(&f.mattes[i * kMatteRanks], kMatteRanks * sizeof(MatteEntry));
                 }
             }
         }

@@ -3,54 +3,11 @@
 #include <cstdio>
 
 #include "renderer/content_hash.h"
+#include "renderer/render_settings_text.h"
 
 namespace raylab {
 
 namespace {
-
-/// A double as text that reads back to the same bits.
-std::string exact(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-std::string exact(const Vec3& v) { return exact(v.x) + "," + exact(v.y) + "," + exact(v.z); }
-
-/// Every field of RenderOptions that changes pixels (not `threads`: the
-/// image does not depend on it). A field added there that changes pixels
-/// belongs here too.
-std::string optionWords(const RenderOptions& o) {
-    std::string s;
-    const auto add = [&s](const char* name, const std::string& value) {
-        s += (s.empty() ? "" : " ") + std::string(name) + "=" + value;
-    };
-    add("width", std::to_string(o.width));
-    add("height", std::to_string(o.height));
-    add("spp", std::to_string(o.spp));
-    add("depth", std::to_string(o.maxDepth));
-    add("min_weight", exact(o.minWeight));
-    add("adaptive", exact(o.adaptiveThreshold));
-    add("adaptive_levels", std::to_string(o.adaptiveMaxLevel));
-    add("seed", std::to_string(o.seed));
-    add("accel", acceleratorName(o.accel));
-    add("bvh_quality", bvhQualityName(o.accelOptions.quality));
-    add("robust", o.accelOptions.robust ? "on" : "off");
-    add("accel_origin", exact(o.accelOptions.origin));
-    const IntersectOptions& in = o.accelOptions.intersect;
-    add("precision", in.precision == Precision::Float ? "float" : "double");
-    add("polygons", !in.polygonTest                             ? "each"
-                    : *in.polygonTest == PolygonTest::Projected ? "projected"
-                                                                : "watertight");
-    add("spawn", o.spawn.mode == OffsetMode::Robust ? "robust" : "epsilon");
-    add("epsilon", exact(o.spawn.epsilon));
-    add("spawn_reference", exact(o.spawn.reference));
-    add("spd", o.spd ? "on" : "off");
-    add("shadows", shadowModeName(o.shadows));
-    add("effects", o.forceAllEffects ? "all" : "auto");
-    add("aovs", o.wantAovs ? "on" : "off");
-    return s;
-}
 
 /// The first word where two settings texts differ, from each ("" past the end).
 std::pair<std::string, std::string> firstDifference(const std::string& a, const std::string& b) {
@@ -86,7 +43,7 @@ RenderIdentity renderIdentity(const std::string& scenePath, const std::vector<In
     }
     id.files = uint32_t(inputs.size());
     id.sceneHash = hash.value();
-    id.settings = optionWords(options);
+    id.settings = renderSettingsText(options);
     id.settings +=
         frames ? " frames=" + std::to_string(frames->first) + ":" + std::to_string(frames->last)
                : std::string(" frames=none");

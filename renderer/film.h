@@ -11,22 +11,46 @@
 
 namespace raylab {
 
+/// Depth and distance of a pixel where nothing is hit: finite, the value
+/// Blender's Cycles writes for the background (1e10), so that statistics and
+/// depth-of-field tools never meet an Inf.
+constexpr float kNoHitDepth = 1e10f;
+
+/// Object ranks kept per pixel for the Cryptomatte layers: 6, the depth
+/// Blender and Arnold write by default (CryptoObject00..02). Exact whenever a
+/// pixel's samples see at most 6 objects; beyond that the 6 largest coverages
+/// are kept.
+constexpr int kMatteRanks = 6;
+
+/// One rank of a pixel's object coverage: the fraction of the pixel's samples
+/// whose camera ray hit `object` first. object = -1 marks an unused rank.
+struct MatteEntry {
+    int32_t object = -1;
+    float coverage = 0.f;
+};
+
 struct Film {
     int width = 0, height = 0;
-    std::vector<float> rgba;      ///< 4 floats per pixel; A = coverage (fraction of samples that hit)
-    std::vector<float> depth;     ///< Z: eye distance to the first hit, +inf where nothing is hit
+    std::vector<float> rgba;      ///< 4 floats per pixel; A per the alpha mode (alpha_mode.h)
+    std::vector<float> z;         ///< planar camera depth of the first hit, kNoHitDepth where nothing is hit
+    std::vector<float> distance;  ///< Euclidean eye distance of the first hit, kNoHitDepth where nothing is hit
     std::vector<float> normal;    ///< 3 floats per pixel: world shading normal of the first hit
     std::vector<float> albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
     std::vector<float> objectId;  ///< index of the first object hit, -1 for background
+    /// kMatteRanks entries per pixel, by decreasing coverage (ties: lower
+    /// object index first); from every sample of the pixel.
+    std::vector<MatteEntry> mattes;
 
     Film() = default;
     Film(int w, int h)
         : width(w), height(h),
           rgba(size_t(w) * h * 4, 0.f),
-          depth(size_t(w) * h, std::numeric_limits<float>::infinity()),
+          z(size_t(w) * h, kNoHitDepth),
+          distance(size_t(w) * h, kNoHitDepth),
           normal(size_t(w) * h * 3, 0.f),
           albedo(size_t(w) * h * 3, 0.f),
-          objectId(size_t(w) * h, -1.f) {}
+          objectId(size_t(w) * h, -1.f),
+          mattes(size_t(w) * h * kMatteRanks) {}
 
     size_t index(int x, int y) const { return size_t(y) * width + x; }
 };

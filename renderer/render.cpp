@@ -16,6 +16,7 @@
 
 #include "geometry/random.h"
 #include "renderer/cancel.h"
+#include "renderer/matte_coverage.h"
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
 #include "renderer/timing.h"
@@ -35,7 +36,8 @@ Color sanitize(const Color& c, uint64_t& nonFinite) {
 }
 
 void storeFirstHit(Film& film, size_t i, const FirstHit& f) {
-    film.depth[i] = f.distance;
+    film.z[i] = f.depth;
+    film.distance[i] = f.distance;
     film.normal[3 * i + 0] = float(f.normal.x);
     film.normal[3 * i + 1] = float(f.normal.y);
     film.normal[3 * i + 2] = float(f.normal.z);
@@ -55,6 +57,16 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
     Sample s;
     const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
     s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
+    if (s.first.hit) {
+        // Planar depth: the hit point's distance from the eye plane, along the view axis.
+        const CameraFrame& f = scene.camera.frame();
+        const Vec3 forward = -f.w;
+        const double d = dot(ray.o - f.eye, forward) +
+                         double(s.first.distance) * dot(ray.d, forward) / length(ray.d);
+        s.first.depth = float(std::min(d, double(FLT_MAX)));
+    } else if (opt.alpha == AlphaMode::Transparent) {
+        s.c = Color{};  // the background is left out: RGB premultiplied by coverage
+    }
     return s;
 }
 
@@ -77,9 +89,11 @@ public:
           m_res(1 << opt.adaptiveMaxLevel),
           m_gridWidth(uint64_t(tile.x1 - tile.x0) * uint64_t(m_res) + 1) {}
 
-    /// Radiance and coverage of pixel (x, y); `first` gets its top-left corner.
-    Color pixel(int x, int y, double& coverage, FirstHit& first) {
+    /// Radiance and coverage of pixel (x, y); `first` gets its top-left
+    /// corner, `mattes` (may be null) the object coverage of its leaf squares.
+    Color pixel(int x, int y, double& coverage, FirstHit& first, MatteCoverage* mattes) {
         const int i = (x - m_tile.x0) * m_res, j = (y - m_tile.y0) * m_res;
+        m_mattes = mattes;
         const Color c = square(i, j, m_res, coverage);
         first = corner(i, j).first;
         return c;
@@ -114,6 +128,11 @@ private:
             return sum * 0.25;
         }
         coverage = 0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit);
+        if (m_mattes) {
+            // Each corner stands for a quarter of this square's share of the pixel.
+            const double w = 0.25 * (double(size) / m_res) * (double(size) / m_res);
+            for (const Sample* s : {&a, &b, &c, &d}) m_mattes->add(int(s->first.objectId), w);
+        }
         return (a.c + b.c + c.c + d.c) * 0.25;
     }
 
@@ -125,17 +144,18 @@ private:
     int m_res;             ///< finest grid steps per pixel side: 2^maxLevel
     uint64_t m_gridWidth;  ///< corners per row of the tile's finest grid
     std::unordered_map<uint64_t, Sample> m_cache;  // node-based: references stay valid
+    MatteCoverage* m_mattes = nullptr;             ///< the current pixel's, or null
 };
 
 /// A finite double that may exceed the float range, clamped so that storing
 /// it never creates an Inf.
 float toFiniteFloat(double v) { return float(std::clamp(v, -double(FLT_MAX), double(FLT_MAX))); }
 
-void storePixel(Film& film, size_t i, const Color& c, double coverage) {
+void storePixel(Film& film, size_t i, const Color& c, double coverage, AlphaMode alpha) {
     film.rgba[4 * i + 0] = toFiniteFloat(c.r);
     film.rgba[4 * i + 1] = toFiniteFloat(c.g);
     film.rgba[4 * i + 2] = toFiniteFloat(c.b);
-    film.rgba[4 * i + 3] = float(coverage);
+    film.rgba[4 * i + 3] = alpha == AlphaMode::Opaque ? 1.f : float(coverage);
 }
 
 /// Renders pixel (x, y) with stratified supersampling.
@@ -154,15 +174,19 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
     }
     Color sum;
     int hits = 0;
+    MatteCoverage mattes;
     for (int k = 0; k < n; ++k) {
         const auto [sx, sy] = stratifiedSample(k, n, gridSide, rng, perm.data());
         const Sample s = traceSample(integrator, scene, opt, x + sx, y + sy, tc);
         sum += s.c;
         hits += s.first.hit;
-        // The AOV layers come from the first sample (the centre when spp = 1).
+        // The AOV layers come from the first sample (the centre when spp = 1),
+        // the object coverage from all of them.
         if (k == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
+        if (opt.wantAovs) mattes.add(int(s.first.objectId), 1.0);
     }
-    storePixel(film, i, sum / double(n), double(hits) / n);
+    if (opt.wantAovs) mattes.store(&film.mattes[i * kMatteRanks], double(n));
+    storePixel(film, i, sum / double(n), double(hits) / n, opt.alpha);
 }
 
 }  // namespace
@@ -210,10 +234,13 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
             for (int x = r.x0; x < r.x1 && !cancelRequested(); ++x) {
                 double coverage = 0;
                 FirstHit first;
-                const Color c = tile.pixel(x, y, coverage, first);
+                MatteCoverage mattes;
+                const Color c =
+                    tile.pixel(x, y, coverage, first, m_options.wantAovs ? &mattes : nullptr);
                 const size_t i = buffers.film.index(x, y);
                 if (first.hit && m_options.wantAovs) storeFirstHit(buffers.film, i, first);
-                storePixel(buffers.film, i, c, coverage);
+                if (m_options.wantAovs) mattes.store(&buffers.film.mattes[i * kMatteRanks]);
+                storePixel(buffers.film, i, c, coverage, m_options.alpha);
             }
         }
         return;
@@ -236,8 +263,14 @@ void FrameRenderer::finish(FrameBuffers& buffers) const {
             const Sample& d = buffers.corners[size_t(y + 1) * cw + x + 1];
             const size_t i = film.index(x, y);
             if (a.first.hit && m_options.wantAovs) storeFirstHit(film, i, a.first);
+            if (m_options.wantAovs) {
+                MatteCoverage mattes;
+                for (const Sample* s : {&a, &b, &c, &d}) mattes.add(int(s->first.objectId), 0.25);
+                mattes.store(&film.mattes[i * kMatteRanks]);
+            }
             storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25,
-                       0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit));
+                       0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit),
+                       m_options.alpha);
         }
     }
 }

@@ -48,4 +48,10 @@ const OptionNames<ShadowMode>& shadowModeNames() {
     return names;
 }
 
+const OptionNames<AlphaMode>& alphaModeNames() {
+    static const auto names =
+        tableOf({AlphaMode::Background, AlphaMode::Transparent, AlphaMode::Opaque}, alphaModeName);
+    return names;
+}
+
 }  // namespace raylab

@@ -12,6 +12,7 @@
 #include "geometry/shape.h"
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
+#include "renderer/alpha_mode.h"
 #include "renderer/render_overrides.h"
 #include "renderer/shadow_mode.h"
 
@@ -32,6 +33,9 @@ const OptionNames<Precision>& precisionNames();
 const OptionNames<EffectsMode>& effectsModeNames();
 /// --shadows, "shadows": opaque, filtered.
 const OptionNames<ShadowMode>& shadowModeNames();
+
+/// --alpha: background, transparent, opaque.
+const OptionNames<AlphaMode>& alphaModeNames();
 
 /// "float" or "double" (the word of --precision).
 const char* precisionName(Precision precision);

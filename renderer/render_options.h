@@ -7,6 +7,7 @@
 #include "geometry/spawn.h"
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
+#include "renderer/alpha_mode.h"
 #include "renderer/shadow_mode.h"
 
 namespace raylab {
@@ -34,6 +35,7 @@ struct RenderOptions {
     AccelOptions accelOptions;  ///< also the intersectors' accuracy knobs (precision, polygons)
     SpawnSettings spawn;      ///< self-intersection strategy
     ShadowMode shadows = ShadowMode::Filtered;  ///< SPD's procedure: opaque
+    AlphaMode alpha = AlphaMode::Background;    ///< what A means where rays miss (--alpha)
 
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)

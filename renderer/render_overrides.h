@@ -9,6 +9,7 @@
 #include "geometry/shape.h"
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
+#include "renderer/alpha_mode.h"
 #include "renderer/shadow_mode.h"
 
 namespace raylab {
@@ -29,6 +30,7 @@ struct RenderOverrides {
     std::optional<EffectsMode> effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
+    std::optional<AlphaMode> alpha;          ///< --alpha background|transparent|opaque
     bool spd = false;
     bool robust = false;
 };

@@ -1,5 +1,6 @@
 #include "renderer/render_setup.h"
 
+#include "renderer/film.h"
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -29,6 +30,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.precision) r.accelOptions.intersect.precision = *o.precision;
     if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
     if (o.shadows) r.shadows = *o.shadows;
+    if (o.alpha) r.alpha = *o.alpha;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;
@@ -58,7 +60,9 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
 
 MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives) {
     MemoryEstimate e;
-    e.filmBytes = double(width) * double(height) * (4 + 1 + 3 + 3 + 1) * sizeof(float) * 2.0;
+    // RGBA, Z, distance, N, albedo, objectId floats and the Cryptomatte ranks.
+    e.filmBytes = double(width) * double(height) *
+                  ((4 + 1 + 1 + 3 + 3 + 1) * sizeof(float) + kMatteRanks * sizeof(MatteEntry)) * 2.0;
     e.accelBytes = double(primitives) * 128.0;
     return e;
 }

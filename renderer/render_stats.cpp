@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/cryptomatte_id.h"
 #include "renderer/io/json_string.h"
 
 namespace raylab {
@@ -40,6 +41,18 @@ public:
     void string(const char* key, const std::string& v) {
         item(key);
         m_out += jsonString(v);
+    }
+    void beginArray(const char* key) {
+        item(key);
+        m_out += '[';
+        m_first = true;
+        ++m_depth;
+    }
+    void endArray() {
+        --m_depth;
+        if (!m_first) newline();
+        m_out += ']';
+        m_first = false;
     }
     void numberArray(const char* key, const std::vector<uint64_t>& values) {
         item(key);
@@ -142,6 +155,17 @@ std::string RenderStats::toJson() const {
     json.number("cut_out_candidates", filter.cutOut);
     json.number("attenuating_crossings", filter.attenuated);
     json.endObject();
+
+    // id (objectId in the EXR), name, Cryptomatte id as in the manifest.
+    json.beginArray("objects");
+    for (size_t i = 0; i < objects.size(); ++i) {
+        json.beginObject();
+        json.number("id", int(i));
+        json.string("name", objects[i]);
+        json.string("cryptomatte", cryptomatteHex(cryptomatteIdBits(objects[i])));
+        json.endObject();
+    }
+    json.endArray();
     json.endObject();
     return json.str();
 }

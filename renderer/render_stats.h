@@ -66,6 +66,9 @@ struct RenderStats {
     /// Candidate hits cut out and transmitter crossings of shadow feelers
     /// (this process's accelerator: under mpirun, rank 0's share).
     FilterCounts filter;
+    /// Scene objects by index (the EXR's objectId): the names their
+    /// Cryptomatte ids are hashed from (exr_writer.h matteName).
+    std::vector<std::string> objects;
 
     /// Million rays (all types) per second of render time.
     double mraysPerSecond() const {

@@ -19,6 +19,8 @@ namespace raylab {
 struct FirstHit {
     bool hit = false;
     float distance = std::numeric_limits<float>::infinity();  ///< from the eye, along the ray
+    /// Planar camera depth: along the view axis (set by the renderer, which knows the camera).
+    float depth = std::numeric_limits<float>::infinity();
     Vec3 normal;       ///< world shading normal (outward)
     Color albedo;      ///< diffuse reflectance kd
     float objectId = -1;

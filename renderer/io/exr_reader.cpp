@@ -66,7 +66,8 @@ Film readExr(const std::string& path) {
             fb.insert(rgbaNames[c],
                       Imf::Slice::Make(Imf::FLOAT, film.rgba.data() + c, dw, 4 * sizeof(float),
                                        4 * sizeof(float) * size_t(w), 1, 1, c == 3 ? 1.0 : 0.0));
-        addLayer(fb, header, dw, {"Z"}, film.depth, n, 0.0);
+        addLayer(fb, header, dw, {"Z"}, film.z, n, 0.0);
+        addLayer(fb, header, dw, {"distance"}, film.distance, n, 0.0);
         addLayer(fb, header, dw, {"N.X", "N.Y", "N.Z"}, film.normal, n, 0.0);
         addLayer(fb, header, dw, {"albedo.R", "albedo.G", "albedo.B"}, film.albedo, n, 0.0);
         addLayer(fb, header, dw, {"objectId"}, film.objectId, n, 0.0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -12,10 +13,12 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 
+#include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 
@@ -44,19 +47,68 @@ void checkLayerSize(const std::string& path, const char* name, size_t size, size
 }
 
 /// Copy of `src` (or `count` copies of `fallback` when src is empty), made
-/// safe for a FLOAT channel. With `isDepth`, +inf ("no hit") is kept and NaN
-/// also becomes +inf; everything else is kept finite.
+/// safe for a FLOAT channel. With `isDepth`, NaN and ±inf become kNoHitDepth
+/// ("no hit", as Blender writes it); everything else is kept finite.
 std::vector<float> floatPlane(const std::vector<float>& src, size_t count, float fallback,
                               bool isDepth) {
-    constexpr float inf = std::numeric_limits<float>::infinity();
     std::vector<float> out(count, fallback);
     if (src.empty()) return out;
     for (size_t i = 0; i < count; ++i) {
         const float v = src[i];
-        if (isDepth && (v == inf || std::isnan(v)))
-            out[i] = inf;
+        if (isDepth && !std::isfinite(v))
+            out[i] = kNoHitDepth;
         else
             out[i] = finiteClamp(v, kFloatMax);
+    }
+    return out;
+}
+
+Imath::M44f toM44f(const Matrix44& m) {
+    Imath::M44f r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[i][j] = float(m[size_t(i)][size_t(j)]);
+    return r;
+}
+
+/// The Cryptomatte planes: per pixel kMatteRanks (id, coverage) pairs, the
+/// ids hashed from the object names. Objects that share a name share an id,
+/// so their coverages are merged; ranks stay sorted by decreasing coverage.
+std::vector<float> cryptomattePlane(const Film& film, size_t n,
+                                    const std::vector<std::string>& objectNames) {
+    std::vector<float> out(n * 2 * kMatteRanks, 0.f);
+    if (film.mattes.size() != n * kMatteRanks) return out;
+    std::vector<float> idOf;  // object index -> id float, computed once per object
+    const auto id = [&](int object) {
+        if (size_t(object) >= idOf.size()) {
+            const size_t from = idOf.size();
+            idOf.resize(size_t(object) + 1);
+            for (size_t k = from; k < idOf.size(); ++k)
+                idOf[k] = cryptomatteIdFloat(cryptomatteIdBits(matteName(objectNames, int(k))));
+        }
+        return idOf[size_t(object)];
+    };
+    struct Rank {
+        float id;
+        float coverage;
+    };
+    for (size_t i = 0; i < n; ++i) {
+        Rank ranks[kMatteRanks];
+        int count = 0;
+        for (int r = 0; r < kMatteRanks; ++r) {
+            const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
+            if (e.object < 0 || !(e.coverage > 0)) continue;
+            const float value = id(e.object);
+            int k = 0;
+            while (k < count && std::memcmp(&ranks[k].id, &value, sizeof value) != 0) ++k;
+            if (k == count) ranks[count++] = {value, 0.f};
+            ranks[k].coverage += finiteClamp(e.coverage, 1.f);
+        }
+        std::stable_sort(ranks, ranks + count,
+                         [](const Rank& a, const Rank& b) { return a.coverage > b.coverage; });
+        for (int k = 0; k < count; ++k) {
+            out[(i * kMatteRanks + size_t(k)) * 2 + 0] = ranks[k].id;
+            out[(i * kMatteRanks + size_t(k)) * 2 + 1] = ranks[k].coverage;
+        }
     }
     return out;
 }
@@ -77,6 +129,12 @@ char* bytes(T* p) {
 
 }  // namespace
 
+std::string matteName(const std::vector<std::string>& objectNames, int index) {
+    if (index >= 0 && size_t(index) < objectNames.size() && !objectNames[size_t(index)].empty())
+        return objectNames[size_t(index)];
+    return "object" + std::to_string(index);
+}
+
 void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
               AtomicFileGroup* group) {
     if (film.width <= 0 || film.height <= 0)
@@ -88,10 +146,12 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         throw InputError(path, 0,
                          "cannot write EXR: film has " + std::to_string(film.rgba.size()) +
                              " RGBA values, expected " + std::to_string(n * 4));
-    checkLayerSize(path, "depth", film.depth.size(), n);
+    checkLayerSize(path, "z", film.z.size(), n);
+    checkLayerSize(path, "distance", film.distance.size(), n);
     checkLayerSize(path, "normal", film.normal.size(), n * 3);
     checkLayerSize(path, "albedo", film.albedo.size(), n * 3);
     checkLayerSize(path, "objectId", film.objectId.size(), n);
+    checkLayerSize(path, "mattes", film.mattes.size(), n * kMatteRanks);
 
     // Converted planes; interleaved layers keep the Film's layout and use strides.
     const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
@@ -101,20 +161,40 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         rgbaF = floatPlane(film.rgba, n * 4, 0.f, false);
     else
         rgbaH = halfPlane(film.rgba, n * 4);
-    std::vector<float> z =
-        floatPlane(film.depth, n, std::numeric_limits<float>::infinity(), true);
+    std::vector<float> z = floatPlane(film.z, n, kNoHitDepth, true);
+    std::vector<float> distance = floatPlane(film.distance, n, kNoHitDepth, true);
     std::vector<float> normal = floatPlane(film.normal, n * 3, 0.f, false);
     std::vector<half> albedo = halfPlane(film.albedo, n * 3);
     std::vector<float> objectId = floatPlane(film.objectId, n, -1.f, false);
+    std::vector<float> crypto = cryptomattePlane(film, n, opts.objectNames);
 
     Imf::Header header(film.width, film.height);
     header.compression() = Imf::ZIP_COMPRESSION;
-    header.insert("raylab/command", Imf::StringAttribute(opts.commandLine));
+    if (!opts.software.empty()) header.insert("software", Imf::StringAttribute(opts.software));
+    if (opts.camera) {
+        header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
+        header.insert("worldToNDC", Imf::M44fAttribute(toM44f(opts.camera->worldToNDC)));
+    }
+    const std::string cryptoPrefix = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/";
+    std::vector<std::string> names;
+    {
+        int maxObject = int(opts.objectNames.size()) - 1;
+        for (const MatteEntry& e : film.mattes) maxObject = std::max(maxObject, int(e.object));
+        for (int k = 0; k <= maxObject; ++k) names.push_back(matteName(opts.objectNames, k));
+    }
+    header.insert(cryptoPrefix + "name", Imf::StringAttribute(kCryptoObjectLayer));
+    header.insert(cryptoPrefix + "hash", Imf::StringAttribute("MurmurHash3_32"));
+    header.insert(cryptoPrefix + "conversion", Imf::StringAttribute("uint32_to_float32"));
+    header.insert(cryptoPrefix + "manifest", Imf::StringAttribute(cryptomatteManifest(names)));
+    if (!opts.settings.empty())
+        header.insert("raylab/settings", Imf::StringAttribute(opts.settings));
+    if (!opts.alpha.empty()) header.insert("raylab/alpha", Imf::StringAttribute(opts.alpha));
     header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
     header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
     if (!opts.scenePath.empty())
         header.insert("raylab/scene", Imf::StringAttribute(opts.scenePath));
     if (!opts.accel.empty()) header.insert("raylab/accel", Imf::StringAttribute(opts.accel));
+    if (opts.frame != 0) header.insert("raylab/frame", Imf::IntAttribute(opts.frame));
 
     Imf::ChannelList& channels = header.channels();
     Imf::FrameBuffer fb;
@@ -131,6 +211,9 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
     fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
+    channels.insert("distance", Imf::Channel(Imf::FLOAT));
+    fb.insert("distance",
+              Imf::Slice(Imf::FLOAT, bytes(distance.data()), sizeof(float), sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
@@ -144,6 +227,19 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
     fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId.data()), sizeof(float),
                                      sizeof(float) * w));
+    // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
+    const size_t cryptoStride = 2 * kMatteRanks * sizeof(float);
+    for (int layer = 0; layer < kMatteRanks / 2; ++layer) {
+        const std::string base = std::string(kCryptoObjectLayer) + (layer < 10 ? "0" : "") +
+                                 std::to_string(layer) + ".";
+        const char* components[4] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            const std::string name = base + components[c];
+            channels.insert(name, Imf::Channel(Imf::FLOAT));
+            fb.insert(name, Imf::Slice(Imf::FLOAT, bytes(crypto.data() + 4 * layer + c),
+                                       cryptoStride, cryptoStride * w));
+        }
+    }
 
     // ZIP compression dominates the write; blocks are compressed in parallel
     // but always written in scan-line order, so the bytes stay deterministic.

@@ -1,21 +1,34 @@
 #pragma once
-// OpenEXR output of a Film: the beauty pass plus the AOV layers.
+// OpenEXR output of a Film: the beauty pass plus the AOV layers, written the
+// way compositors (Nuke, Blender, OpenImageIO) expect them; docs/output.md
+// explains each channel and attribute and how to open the file.
 //
 // Channels (scan-line image, ZIP compression, row 0 = top of the image):
-//   R G B A                   HALF (FLOAT with ExrOptions::floatPixels)
-//   Z                         FLOAT, eye distance; +inf where nothing is hit
+//   R G B A                   HALF (FLOAT with ExrOptions::floatPixels); A per
+//                             the alpha mode (raylab/alpha)
+//   Z                         FLOAT, planar camera depth of the first hit (along
+//                             the view axis), 1e10 where nothing is hit (Cycles)
+//   distance                  FLOAT, Euclidean eye distance of the first hit, 1e10
+//                             where nothing is hit
 //   N.X N.Y N.Z               FLOAT, world shading normal of the first hit
 //   albedo.R albedo.G albedo.B HALF, diffuse reflectance of the first hit
 //   objectId                  FLOAT, index of the first object hit, -1 for the
-//                             background (FLOAT rather than UINT so the -1 of
-//                             the Film survives; ids below 2^24 are exact)
-// Header attributes: "raylab/command" (string), "raylab/spp" (int),
-// "raylab/maxDepth" (int), and when non-empty "raylab/scene" and
-// "raylab/accel" (strings). Nothing that varies between runs (times, dates,
-// host names) goes into the file: the same command writes the same bytes.
+//                             background (FLOAT so the -1 survives; exact below 2^24)
+//   CryptoObject00.R .G .B .A FLOAT, Cryptomatte: id and coverage of ranks 0 and
+//   CryptoObject01, 02        1, then 2 and 3, 4 and 5 (cryptomatte_id.h)
+// Header attributes: software ("raylab VERSION"), worldToCamera and worldToNDC
+// (M44f, camera_matrices.h), cryptomatte/<key>/name|hash|conversion|manifest,
+// raylab/settings (the render settings that define the image, one line),
+// raylab/alpha, raylab/spp, raylab/maxDepth, and when set raylab/scene,
+// raylab/accel and raylab/frame. Nothing that varies between runs of the same
+// render (times, dates, host names, thread counts, output names) goes into
+// the file: the same render writes the same bytes.
 
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "renderer/camera_matrices.h"
 #include "renderer/film.h"
 #include "renderer/io/atomic_file.h"
 
@@ -23,24 +36,39 @@ namespace raylab {
 
 struct ExrOptions {
     bool floatPixels = false;  ///< RGBA as 32-bit FLOAT instead of HALF
-    std::string commandLine;   ///< the command that produced the image
+    std::string software;      ///< "raylab 0.1.0" (omitted when empty)
+    std::string settings;      ///< renderSettingsText of the render (omitted when empty)
+    std::string alpha;         ///< alphaModeName of the render (omitted when empty)
     std::string scenePath;     ///< scene file rendered (omitted when empty)
     std::string accel;         ///< accelerator name (omitted when empty)
     int spp = 0;               ///< samples per pixel
     int maxDepth = 0;          ///< maximum ray depth
+    int frame = 0;             ///< frame number of a sequence (omitted when 0)
+    std::optional<CameraMatrices> camera;  ///< worldToCamera, worldToNDC (omitted when unset)
+    /// Object names by index, hashed into the Cryptomatte ids; an index
+    /// without a name is called "object<index>".
+    std::vector<std::string> objectNames;
     /// Threads compressing scan-line blocks (0: one per hardware thread). OpenEXR's
     /// process-wide worker pool is grown to this size if it is smaller. The file's
     /// bytes do not depend on it.
     int threads = 0;
 };
 
+/// The Cryptomatte layer raylab writes (CryptoObject00, ...).
+constexpr const char* kCryptoObjectLayer = "CryptoObject";
+
+/// The name under which object `index` is hashed: objectNames[index], or
+/// "object<index>" when there is none (or it is empty).
+std::string matteName(const std::vector<std::string>& objectNames, int index);
+
 /// \brief Writes `film` to `path` as an OpenEXR file (layout above), atomically.
 ///
 /// Values are made safe for their channel type before conversion: NaN becomes
 /// 0 and magnitudes beyond the largest finite value of the type (65504 for
-/// HALF) are clamped to it, so RGBA and albedo never hold Inf or NaN. Z keeps
-/// its +inf background. An empty AOV vector is written as the Film default
-/// (Z +inf, N and albedo 0, objectId -1), so every file has all 12 channels.
+/// HALF) are clamped to it, so no channel holds Inf or NaN; Z and distance
+/// hold 1e10 where they are NaN or infinite. An empty AOV vector is written
+/// as the Film default (Z and distance 1e10, N and albedo 0, objectId -1, no
+/// Cryptomatte coverage), so every file has all 25 channels.
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent
 ///         or the file cannot be written; `path` is then left untouched.
 /// With `group`, the file is staged in it and appears at group->commit().

@@ -46,7 +46,12 @@ inline bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
 inline std::string filmDifference(const Film& a, const Film& b) {
     if (a.width != b.width || a.height != b.height) return "size";
     if (!sameBits(a.rgba, b.rgba)) return "rgba";
-    if (!sameBits(a.depth, b.depth)) return "depth";
+    if (!sameBits(a.z, b.z)) return "z";
+    if (!sameBits(a.distance, b.distance)) return "distance";
+    if (a.mattes.size() != b.mattes.size() ||
+        (!a.mattes.empty() &&
+         std::memcmp(a.mattes.data(), b.mattes.data(), a.mattes.size() * sizeof(MatteEntry)) != 0))
+        return "mattes";
     if (!sameBits(a.normal, b.normal)) return "normal";
     if (!sameBits(a.albedo, b.albedo)) return "albedo";
     if (!sameBits(a.objectId, b.objectId)) return "objectId";

@@ -47,8 +47,12 @@ void fillDistinct(Film& f) {
             default: return fromBits(0x3f800000u + k);       // 1 + k ulp
         }
     };
-    for (auto* layer : {&f.rgba, &f.depth, &f.normal, &f.albedo, &f.objectId})
+    for (auto* layer : {&f.rgba, &f.z, &f.distance, &f.normal, &f.albedo, &f.objectId})
         for (float& v : *layer) v = next();
+    for (MatteEntry& m : f.mattes) {
+        m.object = int32_t(bitsOf(next()));
+        m.coverage = next();
+    }
 }
 
 bool pixelEqual(const Film& a, const Film& b, int x, int y) {
@@ -59,7 +63,12 @@ bool pixelEqual(const Film& a, const Film& b, int x, int y) {
         if (bitsOf(a.normal[3 * i + c]) != bitsOf(b.normal[3 * i + c]) ||
             bitsOf(a.albedo[3 * i + c]) != bitsOf(b.albedo[3 * i + c]))
             return false;
-    return bitsOf(a.depth[i]) == bitsOf(b.depth[i]) &&
+    for (int r = 0; r < kMatteRanks; ++r) {
+        const MatteEntry& ma = a.mattes[i * kMatteRanks + size_t(r)];
+        const MatteEntry& mb = b.mattes[i * kMatteRanks + size_t(r)];
+        if (ma.object != mb.object || bitsOf(ma.coverage) != bitsOf(mb.coverage)) return false;
+    }
+    return bitsOf(a.z[i]) == bitsOf(b.z[i]) && bitsOf(a.distance[i]) == bitsOf(b.distance[i]) &&
            bitsOf(a.objectId[i]) == bitsOf(b.objectId[i]);
 }
 
@@ -79,10 +88,11 @@ TEST_CASE("ItemCodec: tiles travel bit for bit, other pixels stay untouched") {
     // 40x20 pixels in 16x16 tiles: 3 columns (16, 16, 8 wide) x 2 rows (16, 4 high).
     REQUIRE(frame.workItemCount() == 6);
     const ItemCodec codec(frame, p->options);
-    // Item 2: x 32..39, y 0..15 = 128 pixels of 12 floats (48 bytes) + the item number.
-    CHECK(codec.itemBytes(2) == 4 + 128 * 48);
+    // Item 2: x 32..39, y 0..15 = 128 pixels of 13 floats and 6 Cryptomatte
+    // ranks of 8 bytes (52 + 48 = 100 bytes) + the item number.
+    CHECK(codec.itemBytes(2) == 4 + 128 * 100);
     // Item 5: x 32..39, y 16..19 = 32 pixels.
-    CHECK(codec.itemBytes(5) == 4 + 32 * 48);
+    CHECK(codec.itemBytes(5) == 4 + 32 * 100);
 
     FrameBuffers from = frame.makeBuffers();
     fillDistinct(from.film);
@@ -112,8 +122,8 @@ TEST_CASE("ItemCodec: SPD corner rows travel bit for bit") {
     // SPD mode: one item per row of corners, 21 rows of 41 corners.
     REQUIRE(frame.workItemCount() == 21);
     const ItemCodec codec(frame, p->options);
-    // A corner: 3 + 3 + 3 doubles, a hit byte, two floats = 72 + 1 + 8 = 81 bytes.
-    CHECK(codec.itemBytes(3) == 4 + 41 * 81);
+    // A corner: 3 + 3 + 3 doubles, a hit byte, three floats = 72 + 1 + 12 = 85 bytes.
+    CHECK(codec.itemBytes(3) == 4 + 41 * 85);
 
     FrameBuffers from = frame.makeBuffers();
     REQUIRE(from.corners.size() == size_t(41) * 21);
@@ -123,6 +133,7 @@ TEST_CASE("ItemCodec: SPD corner rows travel bit for bit") {
         s.c = Color(d + 0.1, -d, std::nextafter(d, 1e9));
         s.first.hit = i % 2 == 1;
         s.first.distance = float(d) * 0.5f;
+        s.first.depth = float(d) * 0.25f + 1e-3f;
         s.first.normal = Vec3(0, -0.0, d * 1e-310);  // -0 and a subnormal double
         s.first.albedo = Color(1.0 / (d + 3), 2, 3);
         s.first.objectId = float(i % 7);
@@ -145,6 +156,7 @@ TEST_CASE("ItemCodec: SPD corner rows travel bit for bit") {
             REQUIRE(bitsOf(a.c.b) == bitsOf(b.c.b));
             REQUIRE(a.first.hit == b.first.hit);
             REQUIRE(bitsOf(a.first.distance) == bitsOf(b.first.distance));
+            REQUIRE(bitsOf(a.first.depth) == bitsOf(b.first.depth));
             REQUIRE(bitsOf(a.first.normal.y) == bitsOf(b.first.normal.y));
             REQUIRE(bitsOf(a.first.normal.z) == bitsOf(b.first.normal.z));
             REQUIRE(bitsOf(a.first.albedo.r) == bitsOf(b.first.albedo.r));

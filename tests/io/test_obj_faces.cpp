@@ -78,12 +78,12 @@ std::string scene(const std::vector<Vec3>& v, const std::string& object) {
            ", \"fov\": 40}, \"objects\": [" + object + "]}";
 }
 
-/// Compares depth pixel by pixel; returns the pixels where coverage or depth differ.
+/// Compares eye distance pixel by pixel; returns the pixels where coverage or depth differ.
 int depthDifferences(const Film& a, const Film& b) {
     int differ = 0;
-    for (size_t i = 0; i < a.depth.size(); ++i) {
-        const float x = a.depth[i], y = b.depth[i];
-        const bool hitA = std::isfinite(x), hitB = std::isfinite(y);
+    for (size_t i = 0; i < a.distance.size(); ++i) {
+        const float x = a.distance[i], y = b.distance[i];
+        const bool hitA = x < kNoHitDepth, hitB = y < kNoHitDepth;
         if (hitA != hitB || (hitA && std::abs(x - y) > 1e-6f * x)) ++differ;
     }
     return differ;
@@ -91,7 +91,7 @@ int depthDifferences(const Film& a, const Film& b) {
 
 int covered(const Film& f) {
     int n = 0;
-    for (float d : f.depth) n += std::isfinite(d);
+    for (float d : f.distance) n += d < kNoHitDepth;
     return n;
 }
 

@@ -29,7 +29,7 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 /// 3x2 film with a different value in every channel of every pixel; pixel
-/// (2, 1) is background (Z = +inf, objectId = -1, zero normal and albedo).
+/// (2, 1) is background (Z = distance = 1e10, objectId = -1, zero normal and albedo).
 Film makeFilm() {
     Film f(3, 2);
     for (int y = 0; y < 2; ++y)
@@ -41,7 +41,8 @@ Film makeFilm() {
             f.rgba[4 * i + 2] = 1000.123f + k;
             f.rgba[4 * i + 3] = 1.0f - 0.25f * k;
             if (x == 2 && y == 1) continue;  // background pixel keeps the Film defaults
-            f.depth[i] = 1.5f + 2.25f * k + 1e-3f;
+            f.z[i] = 1.5f + 2.25f * k + 1e-3f;
+            f.distance[i] = 1.75f + 2.25f * k + 1e-3f;
             f.normal[3 * i + 0] = 0.6f;
             f.normal[3 * i + 1] = -0.8f + 1e-7f * k;
             f.normal[3 * i + 2] = 0.0f;
@@ -58,7 +59,8 @@ float viaHalf(float v) { return float(Imath::half(v)); }
 ExrOptions makeOptions(bool floatPixels) {
     ExrOptions o;
     o.floatPixels = floatPixels;
-    o.commandLine = "raylab render scenes/demo.json -o out.exr --spp 4";
+    o.settings = "width=3 height=2 spp=4";
+    o.software = "raylab 0.1.0";
     o.scenePath = "scenes/demo.json";
     o.accel = "embree";
     o.spp = 4;
@@ -86,7 +88,14 @@ TEST_CASE("exr: exact channel list, types, compression and header attributes") {
         {"R", Imf::HALF},        {"G", Imf::HALF},        {"B", Imf::HALF},
         {"A", Imf::HALF},        {"Z", Imf::FLOAT},       {"N.X", Imf::FLOAT},
         {"N.Y", Imf::FLOAT},     {"N.Z", Imf::FLOAT},     {"albedo.R", Imf::HALF},
-        {"albedo.G", Imf::HALF}, {"albedo.B", Imf::HALF}, {"objectId", Imf::FLOAT}};
+        {"albedo.G", Imf::HALF}, {"albedo.B", Imf::HALF}, {"objectId", Imf::FLOAT},
+        {"distance", Imf::FLOAT},
+        {"CryptoObject00.R", Imf::FLOAT}, {"CryptoObject00.G", Imf::FLOAT},
+        {"CryptoObject00.B", Imf::FLOAT}, {"CryptoObject00.A", Imf::FLOAT},
+        {"CryptoObject01.R", Imf::FLOAT}, {"CryptoObject01.G", Imf::FLOAT},
+        {"CryptoObject01.B", Imf::FLOAT}, {"CryptoObject01.A", Imf::FLOAT},
+        {"CryptoObject02.R", Imf::FLOAT}, {"CryptoObject02.G", Imf::FLOAT},
+        {"CryptoObject02.B", Imf::FLOAT}, {"CryptoObject02.A", Imf::FLOAT}};
     CHECK(channelTypes(path) == expected);
 
     Imf::InputFile in(path.c_str());
@@ -96,9 +105,12 @@ TEST_CASE("exr: exact channel list, types, compression and header attributes") {
     CHECK(h.dataWindow().min.y == 0);
     CHECK(h.dataWindow().max.x == 2);
     CHECK(h.dataWindow().max.y == 1);
-    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("raylab/command"));
-    CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/command").value() ==
-          "raylab render scenes/demo.json -o out.exr --spp 4");
+    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("raylab/settings"));
+    CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/settings").value() ==
+          "width=3 height=2 spp=4");
+    CHECK(h.find("raylab/command") == h.end());  // never the raw command line
+    REQUIRE(h.findTypedAttribute<Imf::StringAttribute>("software"));
+    CHECK(h.typedAttribute<Imf::StringAttribute>("software").value() == "raylab 0.1.0");
     REQUIRE(h.findTypedAttribute<Imf::IntAttribute>("raylab/spp"));
     CHECK(h.typedAttribute<Imf::IntAttribute>("raylab/spp").value() == 4);
     REQUIRE(h.findTypedAttribute<Imf::IntAttribute>("raylab/maxDepth"));
@@ -119,17 +131,17 @@ TEST_CASE("exr: --float-pixels switches only RGBA to FLOAT; empty scene/accel ar
     o.accel.clear();
     writeExr(path, makeFilm(), o);
     const auto types = channelTypes(path);
-    CHECK(types.size() == 12);
-    for (const char* c : {"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "objectId"})
+    CHECK(types.size() == 25);
+    for (const char* c : {"R", "G", "B", "A", "Z", "distance", "N.X", "N.Y", "N.Z", "objectId"})
         CHECK(types.at(c) == Imf::FLOAT);
     for (const char* c : {"albedo.R", "albedo.G", "albedo.B"}) CHECK(types.at(c) == Imf::HALF);
     Imf::InputFile in(path.c_str());
     CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/scene") == nullptr);
     CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/accel") == nullptr);
-    CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/command"));
+    CHECK(in.header().findTypedAttribute<Imf::StringAttribute>("raylab/settings"));
 }
 
-TEST_CASE("exr: values round-trip (FLOAT exact, HALF to the nearest half, Z=+inf kept)") {
+TEST_CASE("exr: values round-trip (FLOAT exact, HALF to the nearest half, background depth 1e10)") {
     TempDir dir;
     const Film src = makeFilm();
     for (bool floatPixels : {false, true}) {
@@ -140,7 +152,8 @@ TEST_CASE("exr: values round-trip (FLOAT exact, HALF to the nearest half, Z=+inf
         REQUIRE(back.width == 3);
         REQUIRE(back.height == 2);
         REQUIRE(back.rgba.size() == src.rgba.size());
-        REQUIRE(back.depth.size() == src.depth.size());
+        REQUIRE(back.z.size() == src.z.size());
+        REQUIRE(back.distance.size() == src.distance.size());
         REQUIRE(back.normal.size() == src.normal.size());
         REQUIRE(back.albedo.size() == src.albedo.size());
         REQUIRE(back.objectId.size() == src.objectId.size());
@@ -151,9 +164,10 @@ TEST_CASE("exr: values round-trip (FLOAT exact, HALF to the nearest half, Z=+inf
             CHECK(back.rgba[i] == expected);
             CHECK(std::fabs(back.rgba[i] - src.rgba[i]) <= std::fabs(src.rgba[i]) * 0x1p-11f);
         }
-        for (size_t i = 0; i < src.depth.size(); ++i) CHECK(back.depth[i] == src.depth[i]);
-        CHECK(std::isinf(back.depth[src.index(2, 1)]));
-        CHECK(back.depth[src.index(2, 1)] > 0);
+        for (size_t i = 0; i < src.z.size(); ++i) CHECK(back.z[i] == src.z[i]);
+        for (size_t i = 0; i < src.distance.size(); ++i) CHECK(back.distance[i] == src.distance[i]);
+        CHECK(back.z[src.index(2, 1)] == 1e10f);  // finite, as Blender writes it
+        CHECK(back.distance[src.index(2, 1)] == 1e10f);
         for (size_t i = 0; i < src.normal.size(); ++i) CHECK(back.normal[i] == src.normal[i]);
         for (size_t i = 0; i < src.albedo.size(); ++i)
             CHECK(back.albedo[i] == viaHalf(src.albedo[i]));
@@ -181,7 +195,8 @@ TEST_CASE("exr: out-of-range and non-finite colour is clamped, never Inf or NaN"
     f.rgba[7] = 1.f;
     f.albedo[0] = 1e9f;  // albedo is HALF too
     f.normal[0] = nan;   // FLOAT layers: NaN -> 0
-    f.depth[3] = nan;    // Z: NaN means "no hit" -> +inf
+    f.z[3] = nan;        // Z: NaN or Inf means "no hit" -> 1e10
+    f.distance[2] = kInf;
 
     writeExr(dir.file("h.exr"), f, makeOptions(false));
     const Film h = readExr(dir.file("h.exr"));
@@ -194,7 +209,8 @@ TEST_CASE("exr: out-of-range and non-finite colour is clamped, never Inf or NaN"
     CHECK(h.rgba[6] == 65504.f);
     CHECK(h.albedo[0] == 65504.f);
     CHECK(h.normal[0] == 0.f);
-    CHECK(h.depth[3] == kInf);
+    CHECK(h.z[3] == 1e10f);
+    CHECK(h.distance[2] == 1e10f);
     for (float v : h.rgba) CHECK(std::isfinite(v));
 
     writeExr(dir.file("f.exr"), f, makeOptions(true));
@@ -229,7 +245,8 @@ TEST_CASE("exr: reader fills missing channels (A = 1, absent layers empty)") {
     CHECK(f.width == 2);
     CHECK(f.height == 1);
     CHECK(f.rgba == std::vector<float>{0.25f, 0.5f, 0.75f, 1.f, 1.f, 2.f, 3.f, 1.f});
-    CHECK(f.depth.empty());
+    CHECK(f.z.empty());
+    CHECK(f.distance.empty());
     CHECK(f.normal.empty());
     CHECK(f.albedo.empty());
     CHECK(f.objectId.empty());
@@ -278,7 +295,7 @@ TEST_CASE("exr: the file bytes do not depend on the compression thread count") {
     // Tall enough for many 16-line ZIP blocks, so several are in flight at once.
     Film f(64, 200);
     for (size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = float(i % 251) / 7.f;
-    for (size_t i = 0; i < f.depth.size(); ++i) f.depth[i] = float(i % 13);
+    for (size_t i = 0; i < f.z.size(); ++i) f.z[i] = float(i % 13);
     ExrOptions o = makeOptions(false);
     o.threads = 1;
     writeExr(dir.file("one.exr"), f, o);
@@ -287,22 +304,25 @@ TEST_CASE("exr: the file bytes do not depend on the compression thread count") {
     const std::string one = raylab::test::readFile(dir.file("one.exr"));
     CHECK(one.size() > 1000);
     CHECK(one == raylab::test::readFile(dir.file("four.exr")));
-    CHECK(readExr(dir.file("four.exr")).depth == f.depth);
+    CHECK(readExr(dir.file("four.exr")).z == f.z);
 }
 
 TEST_CASE("exr: empty AOV vectors are written as the Film defaults") {
     TempDir dir;
     Film f(2, 1);
     f.rgba = {1.f, 0.5f, 0.25f, 1.f, 0.f, 0.f, 0.f, 0.f};
-    f.depth.clear();
+    f.z.clear();
+    f.distance.clear();
+    f.mattes.clear();
     f.normal.clear();
     f.albedo.clear();
     f.objectId.clear();
     writeExr(dir.file("rgba.exr"), f, makeOptions(false));
-    CHECK(channelTypes(dir.file("rgba.exr")).size() == 12);
+    CHECK(channelTypes(dir.file("rgba.exr")).size() == 25);
     const Film back = readExr(dir.file("rgba.exr"));
     CHECK(back.rgba == f.rgba);  // all four values are exact in half
-    CHECK(back.depth == std::vector<float>{kInf, kInf});
+    CHECK(back.z == std::vector<float>{1e10f, 1e10f});
+    CHECK(back.distance == std::vector<float>{1e10f, 1e10f});
     CHECK(back.normal == std::vector<float>(6, 0.f));
     CHECK(back.albedo == std::vector<float>(6, 0.f));
     CHECK(back.objectId == std::vector<float>{-1.f, -1.f});

@@ -31,6 +31,7 @@ RenderStats makeStats() {
     s.spp = 4;
     s.maxDepth = 5;
     s.nonFiniteSamples = 2;
+    s.objects = {"floor", "mirror ball"};
     return s;
 }
 
@@ -75,7 +76,19 @@ TEST_CASE("render stats: the whole JSON document") {
   "surface_filter": {
     "cut_out_candidates": 0,
     "attenuating_crossings": 0
-  }
+  },
+  "objects": [
+    {
+      "id": 0,
+      "name": "floor",
+      "cryptomatte": "7819c83c"
+    },
+    {
+      "id": 1,
+      "name": "mirror ball",
+      "cryptomatte": "b1f3d6f7"
+    }
+  ]
 }
 )";
     CHECK(makeStats().toJson() == expected);

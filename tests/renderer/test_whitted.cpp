@@ -190,7 +190,9 @@ TEST_CASE("whitted: the image is bit-identical for any thread count") {
         REQUIRE(a.film.rgba.size() == b.film.rgba.size());
         CHECK(std::memcmp(a.film.rgba.data(), b.film.rgba.data(), a.film.rgba.size() * 4) == 0);
         CHECK(std::memcmp(b.film.rgba.data(), c.film.rgba.data(), b.film.rgba.size() * 4) == 0);
-        CHECK(std::memcmp(a.film.depth.data(), b.film.depth.data(), a.film.depth.size() * 4) == 0);
+        CHECK(std::memcmp(a.film.z.data(), b.film.z.data(), a.film.z.size() * 4) == 0);
+        CHECK(std::memcmp(a.film.distance.data(), b.film.distance.data(), a.film.distance.size() * 4) == 0);
+        CHECK(std::memcmp(a.film.mattes.data(), b.film.mattes.data(), a.film.mattes.size() * sizeof(MatteEntry)) == 0);
         CHECK(a.rays.total() == b.rays.total());
         CHECK(a.nonFiniteSamples == 0);
         CHECK(a.rays.total(RayType::Reflection) > 0);

@@ -22,14 +22,15 @@ double machineMemory() {
     return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
 }
 
-/// Film bytes per pixel as checkMemoryBudget counts them: 12 floats
-/// (RGBA, Z, N, albedo, objectId) and as much again for the encoders.
-constexpr double kBytesPerPixel = 12 * 4 * 2;
+/// Film bytes per pixel as checkMemoryBudget counts them: 13 floats
+/// (RGBA, Z, distance, N, albedo, objectId), 6 Cryptomatte ranks of 8 bytes,
+/// and as much again for the encoders.
+constexpr double kBytesPerPixel = (13 * 4 + 6 * 8) * 2;
 
 }  // namespace
 
 TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
-    // 60000^2 x 96 bytes = 3.456e11 bytes (about 322 GiB).
+    // 60000^2 x 200 bytes = 7.2e11 bytes (about 670 GiB).
     if (60000.0 * 60000.0 * kBytesPerPixel <= 0.8 * machineMemory()) return;
     TempDir dir;
     const std::string scene = dir.write(
@@ -43,7 +44,7 @@ TEST_CASE("memory guard: NFF 'resolution 60000 60000' is refused up front") {
 }
 
 TEST_CASE("memory guard: a huge JSON image is refused up front") {
-    // 32768^2 x 96 bytes = 1.03e11 bytes (96 GiB).
+    // 32768^2 x 200 bytes = 2.1e11 bytes (200 GiB).
     if (32768.0 * 32768.0 * kBytesPerPixel <= 0.8 * machineMemory()) return;
     TempDir dir;
     const std::string scene = dir.write(
@@ -72,18 +73,18 @@ TEST_CASE("memory guard: checkMemoryBudget's arithmetic") {
             FAIL("65536x65536 was not refused");
         } catch (const raylab::InputError& e) {
             CHECK(e.file() == "s.json");
-            // 65536^2 x 96 B / 2^20 = 393216 MiB exactly.
-            CHECK(contains(e.what(), "393216 MiB"));
+            // 65536^2 x 200 B / 2^20 = 819200 MiB exactly.
+            CHECK(contains(e.what(), "819200 MiB"));
         }
     }
 }
 
 TEST_CASE("memory guard: the estimate counts the film and the acceleration structure") {
-    // 640x480 x 12 floats x 4 B x 2 = 29,491,200 B; 1e6 primitives x 128 B.
+    // 640x480 x (13 floats x 4 B + 6 ranks x 8 B) x 2 = 61,440,000 B; 1e6 primitives x 128 B.
     const raylab::MemoryEstimate e = raylab::estimateRenderMemory(640, 480, 1000000);
-    CHECK(e.filmBytes == 29491200.0);
+    CHECK(e.filmBytes == 61440000.0);
     CHECK(e.accelBytes == 128e6);
-    CHECK(e.total() == 157491200.0);
+    CHECK(e.total() == 189440000.0);
     CHECK(raylab::estimateRenderMemory(1, 1, 0).accelBytes == 0);
 }
 

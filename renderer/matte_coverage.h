@@ -1,0 +1,72 @@
+#pragma once
+// The object coverage of one pixel, gathered sample by sample for the
+// Cryptomatte layers: each sample's first-hit object gets the sample's
+// weight (its share of the pixel), so the coverages are exact for any
+// supersampling, adaptive subdivision or SPD corner averaging.
+
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "renderer/film.h"
+
+namespace raylab {
+
+class MatteCoverage {
+public:
+    /// Adds `weight` (a fraction of the pixel) to `object`; a miss (object < 0) adds nothing.
+    void add(int object, double weight) {
+        if (object < 0) return;
+        for (size_t i = 0; i < m_count; ++i)
+            if (m_inline[i].object == object) {
+                m_inline[i].weight += weight;
+                return;
+            }
+        for (Entry& e : m_spill)
+            if (e.object == object) {
+                e.weight += weight;
+                return;
+            }
+        if (m_count < m_inline.size()) m_inline[m_count++] = {object, weight};
+        else m_spill.push_back({object, weight});
+    }
+
+    /// Writes kMatteRanks entries to `out`: coverage = weight / divisor, the
+    /// largest first (ties: lower object index first), unused ranks {-1, 0}.
+    void store(MatteEntry* out, double divisor = 1.0) const {
+        const auto before = [](const Entry& a, const Entry& b) {
+            return a.weight != b.weight ? a.weight > b.weight : a.object < b.object;
+        };
+        const auto write = [&](const Entry* sorted, size_t n) {
+            for (size_t r = 0; r < size_t(kMatteRanks); ++r)
+                out[r] = r < n ? MatteEntry{sorted[r].object, float(sorted[r].weight / divisor)}
+                               : MatteEntry{};
+        };
+        if (m_spill.empty()) {  // no allocation on the common path
+            // Insertion sort of at most 8 entries (std::sort trips GCC 12's
+            // -Warray-bounds on a small std::array).
+            std::array<Entry, 8> sorted = m_inline;
+            for (size_t i = 1; i < m_count; ++i)
+                for (size_t j = i; j > 0 && before(sorted[j], sorted[j - 1]); --j)
+                    std::swap(sorted[j], sorted[j - 1]);
+            write(sorted.data(), m_count);
+            return;
+        }
+        std::vector<Entry> all(m_inline.begin(), m_inline.begin() + m_count);
+        all.insert(all.end(), m_spill.begin(), m_spill.end());
+        std::sort(all.begin(), all.end(), before);
+        write(all.data(), all.size());
+    }
+
+private:
+    struct Entry {
+        int object = -1;
+        double weight = 0;  // sample counts or dyadic fractions: sums are exact in double
+    };
+    std::array<Entry, 8> m_inline{};  // most pixels see one or two objects
+    size_t m_count = 0;
+    std::vector<Entry> m_spill;
+};
+
+}  // namespace raylab
