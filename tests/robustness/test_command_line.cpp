@@ -30,8 +30,8 @@ TEST_CASE("command line: absurd numbers and unknown flags are usage errors (exit
         {"--epsilon", "-1"},       {"--epsilon", "inf"},    {"--min-weight", "2"},
         {"--seed", "-1"},          {"--adaptive", "nan"},   {"--accel", "bvh"},
         {"--precision", "half"},   {"--bogus"},             {"--width"},
-        // Given twice (the command already has -o): no silent "last one wins".
-        {"--width", "8", "--width", "9"}, {"--output", "other.exr"}, {"-o", "other.exr"},
+        // Given twice: no silent "last one wins" (-o may repeat: one output per use).
+        {"--width", "8", "--width", "9"}, {"--alpha", "opaque", "--alpha", "opaque"},
     };
     for (const std::vector<std::string>& flags : bad) {
         TempDir dir;
@@ -219,11 +219,11 @@ TEST_CASE("command line: outputs naming one file, the scene, or the wrong format
         checkRefused(runRaylab(args), dir, {"scene.json"}, 2, "", "same file");
     }
     CHECK(readFile(scene) == kScene);
-    // Output names that do not match the format written.
-    checkRefused(runRaylab({"render", scene, "-o", dir.file("a.png"), "--quiet"}), dir,
-                 {"scene.json"}, 2, "", ".exr");
+    // Output names without a format's extension (-o picks the format by it).
+    checkRefused(runRaylab({"render", scene, "-o", dir.file("a.bmp"), "--quiet"}), dir,
+                 {"scene.json"}, 2, "", ".exr, .png");
     checkRefused(runRaylab({"render", scene, "-o", dir.file("a"), "--quiet"}), dir,
-                 {"scene.json"}, 2, "", ".exr");
+                 {"scene.json"}, 2, "", ".exr, .png");
     checkRefused(runRaylab({"render", scene, "-o", dir.file("a.exr"), "--png",
                             dir.file("a.jpg"), "--quiet"}),
                  dir, {"scene.json"}, 2, "", ".png");
