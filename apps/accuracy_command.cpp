@@ -39,6 +39,7 @@ const char* const kAccuracyHelp =
     "  precision   float instead of double analytic intersectors\n"
     "  offset      fixed epsilon 1e-2, 1e-4, 1e-6 instead of the robust offset\n"
     "  bvh         Embree build quality low, high; robust traversal\n"
+    "  shadows     opaque shadow feelers (the classic Whitted shadow) instead of filtered\n"
     "  combo       preview, spp 4 + depth 3, adaptive + pruning, spp 16 + depth 8 + robust\n"
     "For each setting: build and render time (wall clock, and CPU time of all threads; medians\n"
     "of interleaved runs), rays traced, RMSE, PSNR and largest channel error in linear RGB\n"

@@ -101,9 +101,10 @@ TEST_CASE("accuracy: the Pareto front keeps the settings nothing beats on time a
 
 TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
     const AccuracySetting d = defaultAccuracySetting();
-    CHECK(d.flags() == "--spp 1 --depth 5 --precision double --bvh-quality medium");
+    CHECK(d.flags() ==
+          "--spp 1 --depth 5 --precision double --bvh-quality medium --shadows filtered");
     CHECK(referenceAccuracySetting(64).flags() ==
-          "--spp 64 --depth 12 --precision double --bvh-quality medium --robust");
+          "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered");
     for (bool quick : {false, true}) {
         const auto settings = accuracySweepSettings(quick);
         const auto knobs = accuracyKnobNames();
@@ -122,6 +123,7 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
             if (s.precision != d.precision) diff.insert("precision");
             if (s.offset != d.offset || s.epsilon != d.epsilon) diff.insert("offset");
             if (s.quality != d.quality || s.robust != d.robust) diff.insert("bvh");
+            if (s.shadows != d.shadows) diff.insert("shadows");
             if (s.knob == "default")
                 CHECK(diff.empty());
             else if (s.knob == "combo")

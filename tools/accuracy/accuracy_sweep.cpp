@@ -83,6 +83,7 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     ov.robust = s.robust;
     ov.precision = s.precision;
     if (s.offset == OffsetMode::FixedEpsilon) ov.epsilon = s.epsilon;
+    ov.shadows = s.shadows;
     const RenderOptions options = resolveRenderOptions(scene, ov);
 
     Rendered out;
@@ -129,6 +130,7 @@ std::string AccuracySetting::flags() const {
     if (offset == OffsetMode::FixedEpsilon) f += " --epsilon " + shortNumber(epsilon);
     f += std::string(" --bvh-quality ") + bvhQualityName(quality);
     if (robust) f += " --robust";
+    f += std::string(" --shadows ") + shadowModeName(shadows);
     return f;
 }
 
@@ -144,7 +146,7 @@ AccuracySetting referenceAccuracySetting(int spp) {
 
 std::vector<std::string> accuracyKnobNames() {
     return {"default",   "spp",    "adaptive", "depth", "min-weight",
-            "precision", "offset", "bvh",      "combo"};
+            "precision", "offset", "bvh",      "shadows", "combo"};
 }
 
 std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
@@ -203,6 +205,9 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
             [](AccuracySetting& s) { s.quality = AccelOptions::BvhQuality::High; });
     add("bvh", "robust traversal", [](AccuracySetting& s) { s.robust = true; });
 
+    // The classic Whitted shadow: every transmitter blocks its light (only
+    // scenes with transmitters differ; the reference dims it by their kt).
+    add("shadows", "opaque shadows", [](AccuracySetting& s) { s.shadows = ShadowMode::Opaque; });
     add("combo", "preview: depth 2, float, bvh low", [](AccuracySetting& s) {
         s.maxDepth = 2;
         s.precision = Precision::Float;

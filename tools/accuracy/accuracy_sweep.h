@@ -18,6 +18,7 @@
 #include "renderer/accel/accelerator.h"
 #include "renderer/film.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_mode.h"
 
 namespace raylab {
 
@@ -26,7 +27,7 @@ namespace raylab {
 struct AccuracySetting {
     std::string name;  ///< row label, e.g. "spp 4"
     std::string knob;  ///< group: reference, default, spp, adaptive, depth, min-weight,
-                       ///< precision, offset, bvh, combo
+                       ///< precision, offset, bvh, shadows, combo
     int spp = 1;
     double adaptiveThreshold = 0;  ///< 0 = off (stratified spp)
     int adaptiveLevels = 2;
@@ -37,6 +38,7 @@ struct AccuracySetting {
     double epsilon = 1e-4;  ///< FixedEpsilon only
     AccelOptions::BvhQuality quality = AccelOptions::BvhQuality::Medium;
     bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST
+    ShadowMode shadows = ShadowMode::Filtered;  ///< feelers through transmitters (or blocked)
 
     /// The equivalent `raylab render` flags ("--spp 4 --depth 5 ...", every knob).
     std::string flags() const;
