@@ -143,6 +143,8 @@ void appendCounters(const WorkCounters& c, std::vector<unsigned char>& out) {
         for (uint64_t n : perType) w.put(n);
     w.put(c.rays.cameraHits);
     w.put(c.nonFinite);
+    w.put(c.cappedSamples);
+    w.put(c.maxSampleRays);
 }
 
 WorkCounters readCounters(ByteReader& in) {
@@ -151,6 +153,8 @@ WorkCounters readCounters(ByteReader& in) {
         for (uint64_t& n : perType) n = in.get<uint64_t>();
     c.rays.cameraHits = in.get<uint64_t>();
     c.nonFinite = in.get<uint64_t>();
+    c.cappedSamples = in.get<uint64_t>();
+    c.maxSampleRays = in.get<uint64_t>();
     return c;
 }
 

@@ -19,6 +19,7 @@
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
 #include "renderer/timing.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
@@ -26,12 +27,14 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-/// Replaces a non-finite radiance by black and counts it: no NaN or Inf may
-/// ever reach a pixel.
+/// No NaN or Inf may ever reach a pixel. The integrator saturates overflows
+/// (shading/radiance_range.h), so a non-finite sample is a defect: counted,
+/// an Inf kept as the largest double (never hidden as black), a NaN black.
 Color sanitize(const Color& c, uint64_t& nonFinite) {
     if (c.isFinite()) return c;
     ++nonFinite;
-    return Color{};
+    const auto fix = [](double v) { return std::isnan(v) ? 0.0 : saturated(v); };
+    return {fix(c.r), fix(c.g), fix(c.b)};
 }
 
 void storeFirstHit(Film& film, size_t i, const FirstHit& f) {
@@ -54,7 +57,10 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
                    const RenderOptions& opt, double px, double py, WorkCounters& tc) {
     Sample s;
     const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
-    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
+    SampleRays spent;
+    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, spent), tc.nonFinite);
+    tc.cappedSamples += spent.capped;
+    tc.maxSampleRays = std::max(tc.maxSampleRays, spent.traced);
     return s;
 }
 
@@ -166,6 +172,21 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
 }
 
 }  // namespace
+
+WorkCounters& WorkCounters::operator+=(const WorkCounters& o) {
+    rays += o.rays;
+    nonFinite += o.nonFinite;
+    cappedSamples += o.cappedSamples;
+    maxSampleRays = std::max(maxSampleRays, o.maxSampleRays);
+    return *this;
+}
+
+void RenderResult::setCounters(const WorkCounters& c) {
+    rays = c.rays;
+    nonFiniteSamples = c.nonFinite;
+    cappedSamples = c.cappedSamples;
+    maxSampleRays = c.maxSampleRays;
+}
 
 FrameRenderer::FrameRenderer(const Scene& scene, const Accelerator& accel,
                              const RenderOptions& options, const EffectSet& effects)
@@ -281,10 +302,9 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
         secondsSince(start);
 
     // Integer sums: the same totals whatever the thread count.
-    for (const WorkCounters& c : counters) {
-        result.rays += c.rays;
-        result.nonFiniteSamples += c.nonFinite;
-    }
+    WorkCounters sum;
+    for (const WorkCounters& c : counters) sum += c;
+    result.setCounters(sum);
     result.film = std::move(buffers.film);
     return result;
 }

@@ -26,10 +26,15 @@ struct Sample {
     FirstHit first;
 };
 
-/// Ray counts and replaced non-finite samples of one worker.
+/// Ray counts and replaced non-finite samples of one worker (or the sum of
+/// several: integer sums and a maximum, the same whatever the split).
 struct WorkCounters {
     RayCounters rays;
     uint64_t nonFinite = 0;
+    uint64_t cappedSamples = 0;  ///< samples whose ray tree the per-sample cap cut short
+    uint64_t maxSampleRays = 0;  ///< the most rays one sample traced
+
+    WorkCounters& operator+=(const WorkCounters& o);
 };
 
 /// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
@@ -75,7 +80,12 @@ struct RenderResult {
     RayCounters rays;
     double renderSeconds = 0;
     uint64_t nonFiniteSamples = 0;  ///< samples that were NaN/Inf and were replaced by black
+    uint64_t cappedSamples = 0;     ///< samples that reached RenderOptions::maxRaysPerSample
+    uint64_t maxSampleRays = 0;     ///< the most rays one sample traced
     bool cancelled = false;
+
+    /// Takes the counts of every worker (called once with their sum).
+    void setCounters(const WorkCounters& c);
 };
 
 /// Renders the scene. Deterministic: the film and the counters are

@@ -5,8 +5,10 @@
 #include <cmath>
 
 #include "geometry/spawn.h"
+#include "renderer/cancel.h"
 #include "shading/brdf.h"
 #include "shading/optics.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
@@ -43,18 +45,33 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     m_kernel = table[m_effects.kernel & kAllKernelEffects];
 }
 
-Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const {
+Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
+                            SampleRays& spent) const {
     // The near plane (NFF's hither) is a distance along the view axis.
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
     const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
-    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first);
+    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first, spent);
+}
+
+bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
+    // A stop request ends even a ray tree of depth 64 within one ray (the
+    // pixel loops check only between pixels).
+    if (cancelRequested()) return false;
+    // The cap bounds the work of one sample; the rays are counted in the
+    // sample's own depth-first order, so the cut falls at the same ray for
+    // any thread count.
+    if (spent.traced < m_options.maxRaysPerSample) return true;
+    spent.capped = true;
+    return false;
 }
 
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
-                                    int depth, RayCounters& counters) const {
-    Color result = m.ka * m_scene.ambient;  // ambient once, kept in shadow
+                                    int depth, RayCounters& counters, SampleRays& spent) const {
+    // Radiance saturates at the largest double (shading/radiance_range.h):
+    // an overflow is as bright as can be, never Inf, never NaN, never black.
+    Color result = saturated(m.ka * m_scene.ambient);  // ambient once, kept in shadow
     if constexpr ((E & kShadows) == 0) {
         return result;
     } else {
@@ -79,13 +96,14 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
             counters.count(RayType::Shadow, depth + 1);
+            ++spent.traced;
             // Filtered shadows: the light arrives dimmed by the transmitters
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
             if (m_effects.filteredShadows) {
                 const Color through = m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
                 if (through.isBlack() || !facing) continue;
-                arriving = arriving * through;
+                arriving = saturated(arriving * saturated(through));
             } else if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) {
                 continue;
             }
@@ -97,14 +115,16 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
                                   : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
             }
         }
-        return result;
+        return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
     }
 }
 
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, RayCounters& counters, FirstHit* first) const {
+                               double weight, RayCounters& counters, FirstHit* first,
+                               SampleRays& spent) const {
     counters.count(type, depth);
+    ++spent.traced;
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) counters.cameraHits++;
@@ -127,7 +147,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     }
 
     const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays
-    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters);
+    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters, spent);
     if (depth >= m_options.maxDepth) return result;
 
     constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;
@@ -146,29 +166,31 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const double etaT = entering ? m.ior : 1.0;
                 const std::optional<Vec3> t = refract(dir, n, etaI, etaT);
                 if (t) {
-                    const double w = weight * m.kt.maxComponent();
-                    if (!m_prune || m_options.spd || w >= m_options.minWeight) {
+                    const double w = saturated(weight * m.kt.maxComponent());
+                    if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(spent)) {
                         const SpawnedRay r = spawn(*t);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  counters, nullptr);
+                                                  counters, nullptr, spent);
                     }
                 } else {
-                    reflectWeight += m.kt;  // total internal reflection
+                    reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
                     traceReflection = traceReflection || m.transmissive() || !m_prune;
                 }
             }
         }
         if (traceReflection) {
-            const double w = weight * reflectWeight.maxComponent();
-            if (!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) {
+            const double w = saturated(weight * reflectWeight.maxComponent());
+            if ((!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) &&
+                mayBranch(spent)) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   counters, nullptr);
+                                                   counters, nullptr, spent);
             }
         }
     }
-    return result;
+    // Finite weights times finite radiance, all >= 0: at worst +Inf, saturated.
+    return saturated(result);
 }
 
 }  // namespace raylab

@@ -24,26 +24,38 @@ struct FirstHit {
     float objectId = -1;
 };
 
+/// What one camera sample spent: the rays it traced (every type) and whether
+/// the per-sample cap (RenderOptions::maxRaysPerSample) refused it a
+/// reflection or refraction ray.
+struct SampleRays {
+    uint64_t traced = 0;
+    bool capped = false;
+};
+
 class WhittedIntegrator {
 public:
     WhittedIntegrator(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                       const EffectSet& effects);
 
-    /// Radiance along a camera ray. Counts rays into `counters`; fills
-    /// `first` (may be null) with the first hit's AOV data.
-    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const;
+    /// Radiance along a camera ray. Counts rays into `counters` and into
+    /// `spent` (this sample alone); fills `first` (may be null) with the first
+    /// hit's AOV data. After a stop request (renderer/cancel.h) no further
+    /// reflection or refraction ray is traced: the result is then partial.
+    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent) const;
 
 private:
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                RayCounters& counters, FirstHit* first) const;
+                RayCounters& counters, FirstHit* first, SampleRays& spent) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     RayCounters& counters) const;
+                     RayCounters& counters, SampleRays& spent) const;
+    /// Whether the sample may trace one more reflection or refraction ray.
+    bool mayBranch(SampleRays& spent) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                RayCounters&, FirstHit*) const;
+                                                RayCounters&, FirstHit*, SampleRays&) const;
 
     const Scene& m_scene;
     const Accelerator& m_accel;

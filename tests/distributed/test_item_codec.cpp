@@ -184,13 +184,34 @@ TEST_CASE("appendCounters / readCounters: every counter round-trips") {
         for (uint64_t& n : perType) n = (k++) * 0x9E3779B97F4A7C15ULL;  // distinct, large
     c.rays.cameraHits = 12345678901234ULL;
     c.nonFinite = 7;
+    c.cappedSamples = 9;
+    c.maxSampleRays = 65538;
     std::vector<unsigned char> bytes;
     appendCounters(c, bytes);
-    // 4 ray types x 65 depths + camera hits + non-finite, 8 bytes each.
-    CHECK(bytes.size() == (4 * 65 + 2) * 8);
+    // 4 ray types x 65 depths + camera hits, non-finite, capped, most rays: 8 bytes each.
+    CHECK(bytes.size() == (4 * 65 + 4) * 8);
     ByteReader in(bytes.data(), bytes.size());
     const WorkCounters back = readCounters(in);
     CHECK(in.done());
     CHECK(test::sameCounters(back.rays, c.rays));
     CHECK(back.nonFinite == 7);
+    CHECK(back.cappedSamples == 9);
+    CHECK(back.maxSampleRays == 65538);
+}
+
+TEST_CASE("WorkCounters +=: sums, and the largest sample") {
+    WorkCounters a, b;
+    a.nonFinite = 1;
+    a.cappedSamples = 2;
+    a.maxSampleRays = 70;
+    a.rays.cameraHits = 5;
+    b.nonFinite = 10;
+    b.cappedSamples = 20;
+    b.maxSampleRays = 30;
+    b.rays.cameraHits = 6;
+    a += b;
+    CHECK(a.nonFinite == 11);
+    CHECK(a.cappedSamples == 22);
+    CHECK(a.maxSampleRays == 70);
+    CHECK(a.rays.cameraHits == 11);
 }

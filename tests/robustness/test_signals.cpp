@@ -182,8 +182,10 @@ const char* signalName(int sig) {
 /// signal is sent only once it runs again (it lands inside the phase's work).
 /// Returns the exit code (-1: it did not end within 60 s).
 int signalInPhase(const TempDir& dir, const std::vector<std::string>& args,
-                  const std::string& phase, int sig, bool afterContinue = false) {
-    Process p(args, dir.file("stdout"), dir.file("stderr"), 0, {"RAYLAB_TEST_STOP_AT=" + phase});
+                  const std::string& phase, int sig, bool afterContinue = false,
+                  std::vector<std::string> env = {}) {
+    env.push_back("RAYLAB_TEST_STOP_AT=" + phase);
+    Process p(args, dir.file("stdout"), dir.file("stderr"), 0, env);
     REQUIRE(p.started());
     REQUIRE(p.waitUntilStopped());
     if (!afterContinue) p.signal(sig);
@@ -273,13 +275,20 @@ TEST_CASE("signals: a signal inside a long parse, BVH build or deep ray tree end
                    "--spp", "64", "--quiet"}},
         {"build", {"render", obj, "-o", dir.file("out.exr"), "--bvh-quality", "high", "--width",
                    "1024", "--height", "1024", "--spp", "64", "--quiet"}},
-        {"render", {"render", deep, "-o", dir.file("out.exr"), "--threads", "1", "--quiet"}},
+        // Depth 64 and the largest ray cap: without the check inside the ray
+        // tree one sample would run for hours; without the watchdog only that
+        // check can end it.
+        {"render", {"render", deep, "-o", dir.file("out.exr"), "--threads", "1", "--quiet",
+                    "--depth", "64", "--max-rays", "1099511627776"}},
     };
     for (const Case& c : cases) {
         for (const int sig : {SIGINT, SIGTERM}) {
             CAPTURE(c.phase);
             CAPTURE(signalName(sig));
-            const int code = signalInPhase(dir, c.args, c.phase, sig, true);
+            const std::vector<std::string> env =
+                c.phase == std::string("render") ? std::vector<std::string>{"RAYLAB_TEST_NO_WATCHDOG=1"}
+                                                 : std::vector<std::string>{};
+            const int code = signalInPhase(dir, c.args, c.phase, sig, true, env);
             CHECK(code == 128 + sig);
             checkOneLine(dir, std::string("raylab: interrupted by ") + signalName(sig) +
                                   ": no output written");
