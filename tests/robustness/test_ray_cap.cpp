@@ -16,18 +16,6 @@ using namespace raylab::robust;
 
 namespace {
 
-/// The scene of the issue: glass in a mirror, 4x4 pixels, depth 64, weights
-/// that never fall to zero (no pruning ever ends the tree).
-const std::string kGlassInMirror =
-    "{\"image\": {\"width\": 4, \"height\": 4, \"depth\": 64},\n"
-    " \"camera\": {\"eye\": [0, 0, 0.5], \"look_at\": [0, 0, -1], \"fov\": 30},\n"
-    " \"lights\": [{\"type\": \"point\", \"position\": [0.2, 0.3, 0.4]}],\n"
-    " \"materials\": {\"mirror\": {\"kd\": 0.05, \"km\": 0.9},\n"
-    "               \"glass\": {\"kd\": 0, \"km\": 0.1, \"kt\": 0.9, \"ior\": 1.5}},\n"
-    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 3, \"material\": \"mirror\",\n"
-    "               \"sides\": \"inside\"},\n"
-    "              {\"type\": \"sphere\", \"center\": [0, 0, -1], \"radius\": 0.5, \"material\": \"glass\"}]}\n";
-
 /// One pixel inside a mirror sphere without lights: every hit spawns exactly
 /// one reflection ray and no shadow ray, so a sample traces a chain of
 /// min(depth, cap) rays: the camera ray and depth - 1 reflections.
@@ -63,7 +51,7 @@ std::string countsOnly(const std::string& json) {
 TEST_CASE("ray cap: glass inside a mirror at depth 64 ends capped, counted, warned once, "
           "identical for any thread count") {
     TempDir dir;
-    const std::string scene = dir.write("deep.json", kGlassInMirror);
+    const std::string scene = dir.write("deep.json", kGlassInMirrorScene);
     std::vector<std::string> exr, stats;
     for (const char* threads : {"1", "2"}) {
         const std::string n = threads;

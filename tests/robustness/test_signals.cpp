@@ -144,18 +144,6 @@ const std::string kSmallScene =
     "                                   {\"frame\": 3, \"eye\": [1, 0, 5], \"look_at\": [0, 0, 0]}]},\n"
     " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
 
-/// A glass sphere inside a mirror sphere: the ray tree doubles at every level,
-/// so at depth 60 one pixel takes longer than any test may wait.
-const std::string kDeepScene =
-    "{\"image\": {\"width\": 4, \"height\": 4, \"depth\": 60},\n"
-    " \"camera\": {\"eye\": [0, 0, 0.5], \"look_at\": [0, 0, -1], \"fov\": 30},\n"
-    " \"lights\": [{\"type\": \"point\", \"position\": [0.2, 0.3, 0.4]}],\n"
-    " \"materials\": {\"mirror\": {\"kd\": 0.05, \"km\": 0.9},\n"
-    "               \"glass\": {\"kd\": 0, \"km\": 0.1, \"kt\": 0.9, \"ior\": 1.5}},\n"
-    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 3, \"material\": \"mirror\",\n"
-    "               \"sides\": \"inside\"},\n"
-    "              {\"type\": \"sphere\", \"center\": [0, 0, -1], \"radius\": 0.5, \"material\": \"glass\"}]}\n";
-
 /// A height-field OBJ of 2·n² triangles: seconds to parse and to build a BVH for.
 std::string gridObj(int n) {
     std::string s;
@@ -265,7 +253,7 @@ TEST_CASE("signals: a signal inside a long parse, BVH build or deep ray tree end
     // whichever check point or the watchdog ends it, the contract is the same.
     TempDir dir;
     const std::string obj = dir.write("grid.obj", gridObj(230));
-    const std::string deep = dir.write("deep.json", kDeepScene);
+    const std::string deep = dir.write("deep.json", kGlassInMirrorScene);
     struct Case {
         const char* phase;
         std::vector<std::string> args;
@@ -279,7 +267,7 @@ TEST_CASE("signals: a signal inside a long parse, BVH build or deep ray tree end
         // tree one sample would run for hours; without the watchdog only that
         // check can end it.
         {"render", {"render", deep, "-o", dir.file("out.exr"), "--threads", "1", "--quiet",
-                    "--depth", "64", "--max-rays", "1099511627776"}},
+                    "--max-rays", "1099511627776"}},
     };
     for (const Case& c : cases) {
         for (const int sig : {SIGINT, SIGTERM}) {
