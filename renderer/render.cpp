@@ -54,7 +54,7 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
                    const RenderOptions& opt, double px, double py, WorkCounters& tc) {
     Sample s;
     const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
-    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
+    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, &tc.shadows), tc.nonFinite);
     return s;
 }
 

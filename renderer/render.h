@@ -34,10 +34,12 @@ struct CornerSample {
     bool hit;
 };
 
-/// Ray counts and replaced non-finite samples of one worker.
+/// Ray counts and replaced non-finite samples of one worker, and the shadow
+/// cache its ray trees share (renderer/shadow_cache.h).
 struct WorkCounters {
     RayCounters rays;
     uint64_t nonFinite = 0;
+    ShadowCache shadows;
 };
 
 /// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples

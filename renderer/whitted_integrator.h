@@ -12,6 +12,7 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_cache.h"
 
 namespace raylab {
 
@@ -30,20 +31,29 @@ public:
                       const EffectSet& effects);
 
     /// Radiance along a camera ray. Counts rays into `counters`; fills
-    /// `first` (may be null) with the first hit's AOV data.
-    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const;
+    /// `first` (may be null) with the first hit's AOV data. `shadows` (may be
+    /// null) is the calling thread's shadow cache: it changes no answer, only
+    /// how fast shadow rays are answered.
+    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
+             ShadowCache* shadows = nullptr) const;
 
 private:
+    /// What one worker carries through a ray tree.
+    struct TraceState {
+        RayCounters& counters;
+        ShadowCache* shadows;
+    };
+
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                RayCounters& counters, FirstHit* first) const;
+                TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     RayCounters& counters) const;
+                     TraceState& state) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                RayCounters&, FirstHit*) const;
+                                                TraceState&, FirstHit*) const;
 
     const Scene& m_scene;
     const Accelerator& m_accel;

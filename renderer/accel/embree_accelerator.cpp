@@ -212,6 +212,31 @@ void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, dou
     if (m_filter.active()) ctx.filter = &m_filter;
 }
 
+bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
+                                 OcclusionHint& hint) const {
+    RTCRay r;
+    if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
+    if (hint.primitive != OcclusionHint::kNone) {
+        // Only unfiltered entries are named (occludedCallback): their exact
+        // test is the whole answer the callback would give.
+        const EmbreeUserTable::Entry& e = m_user.entries[hint.primitive];
+        if (e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options)) return true;
+    }
+    EmbreeQueryContext ctx;
+    initContext(ctx, &ray, tMin, tMax);
+    rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
+    // A lit point forgets the occluder: its neighbours are likely lit too,
+    // and a test of a primitive that does not block is wasted.
+    hint.primitive = r.tfar < 0.0f ? ctx.occluderEntry : OcclusionHint::kNone;
+    return r.tfar < 0.0f;
+}
+
+Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
+                                        OcclusionHint& hint) const {
+    if (!m_filter.active()) return occluded(ray, tMin, tMax, hint) ? Color{} : Color(1.0);
+    return transmittance(ray, tMin, tMax);
+}
+
 std::unique_ptr<Accelerator> makeEmbreeAccelerator(const Scene& scene,
                                                    const AccelOptions& options) {
     return std::make_unique<EmbreeAccelerator>(scene, options);

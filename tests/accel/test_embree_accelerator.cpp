@@ -389,3 +389,36 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
     CHECK(packetDiffer == 0);
     CHECK(streamDiffer == 0);
 }
+
+TEST_CASE("embree: occlusion with a shadow-cache hint gives occluded()'s answer, hint or not") {
+    // 300 spheres (user geometry), a triangle sphere and terrain (native
+    // triangles), a ground plane: shadow segments between random points.
+    const Scene scene = randomScene(20, 300);
+    EmbreeAccelerator embree(scene, {});
+    NaiveAccelerator naive(scene, {});
+    Rng rng(7);
+    OcclusionHint carried;  // as the integrator carries it from one feeler to the next
+    int blocked = 0, named = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3 from = rng.point(-12, 12), to = rng.point(-12, 12);
+        const Ray ray{from, to - from};
+        const bool expected = embree.occluded(ray, 1e-9, 1.0);
+        CHECK(naive.occluded(ray, 1e-9, 1.0) == expected);
+        CHECK(embree.occluded(ray, 1e-9, 1.0, carried) == expected);
+        blocked += expected;
+        if (carried.primitive != OcclusionHint::kNone) {
+            ++named;
+            // A named occluder blocks this very segment.
+            OcclusionHint again = carried;
+            CHECK(embree.occluded(ray, 1e-9, 1.0, again));
+        }
+        if (!expected) CHECK(carried.primitive == OcclusionHint::kNone);
+        // Any entry as the hint, blocking or not: the same answer.
+        OcclusionHint any{uint32_t(rng.next() % 300)};
+        CHECK(embree.occluded(ray, 1e-9, 1.0, any) == expected);
+        CHECK((embree.transmittance(ray, 1e-9, 1.0, any).isBlack()) == expected);
+    }
+    CHECK(blocked > 1000);  // both answers well represented
+    CHECK(blocked < 3900);
+    CHECK(named > 100);     // and spheres named as occluders
+}
