@@ -65,6 +65,8 @@ const char* const kRenderHelp =
     "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
+    "  --compression none|rle|zips|zip|piz   lossless EXR compression (default zip; none and rle\n"
+    "                           write fastest, zip and piz smallest: docs/benchmarks.md)\n"
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects,\n"
     "                           samples that reached the ray cap)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
@@ -131,6 +133,7 @@ struct RenderCli {
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
     bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
+    ExrCompression compression = ExrCompression::Zip;
     double exposure = 0;
     RenderOverrides overrides;
     CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
@@ -216,6 +219,12 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
+        else if (a == "--compression") {
+            const std::string v = p.choice(a, {std::begin(kExrCompressionNames),
+                                               std::end(kExrCompressionNames)});
+            for (size_t i = 0; i < std::size(kExrCompressionNames); ++i)
+                if (v == kExrCompressionNames[i]) cli.compression = ExrCompression(i);
+        }
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
         else if (a == "--width") o.width = int(p.integer(a, 1, kMaxImageSide));
         else if (a == "--height") o.height = int(p.integer(a, 1, kMaxImageSide));
@@ -451,6 +460,7 @@ int renderCommand(const std::vector<std::string>& args) {
         t0 = Clock::now();
         ExrOptions exr;
         exr.floatPixels = cli.floatPixels;
+        exr.compression = cli.compression;
         exr.commandLine = imageCommand(args);
         exr.spp = options.spp;
         exr.maxDepth = options.maxDepth;

@@ -46,11 +46,13 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
 }
 
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
-                            SampleRays& spent) const {
+                            SampleRays& spent, ShadowCache* shadows) const {
     // The near plane (NFF's hither) is a distance along the view axis.
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
     const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
-    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first, spent);
+    if (shadows) shadows->prepare(m_scene.lights.size(), m_options.maxDepth);
+    TraceState state{counters, shadows, spent};
+    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first);
 }
 
 bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
@@ -68,7 +70,7 @@ bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
-                                    int depth, RayCounters& counters, SampleRays& spent) const {
+                                    int depth, TraceState& state) const {
     // Radiance saturates at the largest double (shading/radiance_range.h):
     // an overflow is as bright as can be, never Inf, never NaN, never black.
     Color result = saturated(m.ka * m_scene.ambient);  // ambient once, kept in shadow
@@ -78,7 +80,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
         // SPD counts shadow rays even from surfaces without a local term.
         if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
         const Color diffuse = diffuseAt(si, m);
-        for (const Light& light : m_scene.lights) {
+        for (size_t li = 0; li < m_scene.lights.size(); ++li) {
+            const Light& light = m_scene.lights[li];
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
             double tMax;
             if (light.type == Light::Type::Point) {
@@ -95,16 +98,20 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             const bool facing = dot(n, l) > 0;
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
-            counters.count(RayType::Shadow, depth + 1);
-            ++spent.traced;
+            state.counters.count(RayType::Shadow, depth + 1);
+            ++state.spent.traced;
+            OcclusionHint* hint = state.shadows ? &state.shadows->at(li, depth) : nullptr;
             // Filtered shadows: the light arrives dimmed by the transmitters
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
             if (m_effects.filteredShadows) {
-                const Color through = m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
+                const Color through = hint ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, *hint)
+                                           : m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
                 if (through.isBlack() || !facing) continue;
                 arriving = saturated(arriving * saturated(through));
-            } else if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) {
+            } else if ((hint ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, *hint)
+                             : m_accel.occluded(shadow.ray, shadow.tMin, tMax)) ||
+                       !facing) {
                 continue;
             }
             result += lambert(diffuse, arriving, n, l);
@@ -121,13 +128,12 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
 
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, RayCounters& counters, FirstHit* first,
-                               SampleRays& spent) const {
-    counters.count(type, depth);
-    ++spent.traced;
+                               double weight, TraceState& state, FirstHit* first) const {
+    state.counters.count(type, depth);
+    ++state.spent.traced;
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
     if (!hit) return m_scene.background;
-    if (type == RayType::Camera) counters.cameraHits++;
+    if (type == RayType::Camera) state.counters.cameraHits++;
 
     const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect);
     const Material& m = m_scene.materials[si.material];
@@ -147,7 +153,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     }
 
     const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays
-    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters, spent);
+    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, state);
     if (depth >= m_options.maxDepth) return result;
 
     constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;
@@ -167,10 +173,10 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const std::optional<Vec3> t = refract(dir, n, etaI, etaT);
                 if (t) {
                     const double w = saturated(weight * m.kt.maxComponent());
-                    if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(spent)) {
+                    if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(state.spent)) {
                         const SpawnedRay r = spawn(*t);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  counters, nullptr, spent);
+                                                  state, nullptr);
                     }
                 } else {
                     reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
@@ -181,11 +187,11 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
         if (traceReflection) {
             const double w = saturated(weight * reflectWeight.maxComponent());
             if ((!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) &&
-                mayBranch(spent)) {
+                mayBranch(state.spent)) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   counters, nullptr, spent);
+                                                   state, nullptr);
             }
         }
     }

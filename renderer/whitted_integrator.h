@@ -12,6 +12,7 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_cache.h"
 
 namespace raylab {
 
@@ -41,21 +42,31 @@ public:
     /// `spent` (this sample alone); fills `first` (may be null) with the first
     /// hit's AOV data. After a stop request (renderer/cancel.h) no further
     /// reflection or refraction ray is traced: the result is then partial.
-    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent) const;
+    /// `shadows` (may be null) is the calling thread's shadow cache: it
+    /// changes no answer, only how fast shadow rays are answered.
+    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
+             ShadowCache* shadows = nullptr) const;
 
 private:
+    /// What one worker carries through a ray tree.
+    struct TraceState {
+        RayCounters& counters;
+        ShadowCache* shadows;
+        SampleRays& spent;  ///< this sample's rays, for the per-sample cap
+    };
+
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                RayCounters& counters, FirstHit* first, SampleRays& spent) const;
+                TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     RayCounters& counters, SampleRays& spent) const;
+                     TraceState& state) const;
     /// Whether the sample may trace one more reflection or refraction ray.
     bool mayBranch(SampleRays& spent) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                RayCounters&, FirstHit*, SampleRays&) const;
+                                                TraceState&, FirstHit*) const;
 
     const Scene& m_scene;
     const Accelerator& m_accel;
