@@ -212,9 +212,7 @@ public:
     }
 
 private:
-    const ObjCorner& corner(const ObjFace& f, size_t k) const {
-        return m_data.corners[f.firstCorner + k];
-    }
+    ObjCorner corner(const ObjFace& f, size_t k) const { return m_data.corner(f.firstCorner + k); }
 
     bool validNormal(int32_t vn) const {
         if (vn < 0) return false;
@@ -276,7 +274,7 @@ private:
         for (const auto& t : triangles) {
             std::array<uint32_t, 3> tri;
             for (size_t j = 0; j < 3; ++j) {
-                const ObjCorner& c = corner(f, t[j]);
+                const ObjCorner c = corner(f, t[j]);
                 NormalSource n = normals;
                 if (n.kind == NormalSource::File) n.id = uint64_t(c.vn);
                 tri[j] = part.vertex(c, n, m_world, m_data, m_options.transform);

@@ -39,12 +39,16 @@
 // raylab keeps faces with fewer than 3 corners in its ObjData (the mesh
 // builder drops them with a warning at their line); tinyobj drops them while
 // parsing: only faces of 3 or more corners are compared.
+//
+// raylab's parse is also run in chunks of 13 bytes (4099 for texts of 64 KiB
+// and more: many chunks, cut inside every kind of statement sequence): its data, warnings and error must not change.
 
 #include <tiny_obj_loader.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <set>
 #include <sstream>
@@ -208,6 +212,38 @@ inline std::string describe(float a, float b) {
     return s.str();
 }
 
+/// The small chunk size a text is also parsed in: 13 bytes (a cut inside
+/// nearly every line), coarser for large texts so the check stays fast.
+inline size_t smallChunks(std::string_view text) { return text.size() < 65536 ? 13 : 4099; }
+
+/// Whether two parses gave identical data, bit for bit.
+inline bool sameObjData(const ObjData& a, const ObjData& b) {
+    const auto same = [](const auto& x, const auto& y) {
+        return x.size() == y.size() &&
+               std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+    };
+    if (!same(a.positions, b.positions) || !same(a.colors, b.colors) ||
+        !same(a.normals, b.normals) || !same(a.texcoords, b.texcoords) ||
+        !same(a.cornerV, b.cornerV) || !same(a.cornerVt, b.cornerVt) ||
+        !same(a.cornerVn, b.cornerVn) || a.faces.size() != b.faces.size() ||
+        a.linesRead != b.linesRead || a.materialNames.size() != b.materialNames.size() ||
+        a.libraries.size() != b.libraries.size())
+        return false;
+    for (size_t i = 0; i < a.faces.size(); ++i) {
+        const ObjFace &f = a.faces[i], &g = b.faces[i];
+        if (f.firstCorner != g.firstCorner || f.cornerCount != g.cornerCount ||
+            f.material != g.material || f.smoothingGroup != g.smoothingGroup || f.line != g.line)
+            return false;
+    }
+    const auto sameNames = [](const std::vector<ObjName>& x, const std::vector<ObjName>& y) {
+        for (size_t i = 0; i < x.size(); ++i)
+            if (x[i].name != y[i].name || x[i].line != y[i].line || x[i].uses != y[i].uses)
+                return false;
+        return true;
+    };
+    return sameNames(a.materialNames, b.materialNames) && sameNames(a.libraries, b.libraries);
+}
+
 }  // namespace obj_differential_detail
 
 /// Reads `text` with both parsers and compares (see the file comment).
@@ -222,17 +258,39 @@ inline ObjDifferential compareObjParsers(std::string_view text) {
         return out;
     }
 
-    // raylab: the text checks of loadObj, then the parser.
+    // raylab: the text checks of loadObj, then the parser; once in the
+    // parser's own chunks and once cut into chunks of a few bytes, which must
+    // give the same data, warnings and error (the parallel parse's merge).
     ObjData ours;
-    try {
-        const std::string path = "differential.obj";
-        if (const auto [line, message] = findNonText(text, "OBJ"); line > 0)
-            throw InputError(path, line, message);
-        LoadWarnings warn(path);
-        ours = parseObj(text, path, warn);
-    } catch (const InputError& e) {
+    std::vector<std::string> ourWarnings;
+    const std::string path = "differential.obj";
+    if (const auto [line, message] = findNonText(text, "OBJ"); line > 0) {
         out.raylabRefused = true;
-        out.raylabError = e.located();
+        out.raylabError = InputError(path, line, message).located();
+    } else {
+        for (const size_t chunkBytes : {kObjChunkBytes, smallChunks(text)}) {
+            ObjData data;
+            std::string error;
+            LoadWarnings warn(path);
+            try {
+                data = parseObj(text, path, warn, chunkBytes);
+            } catch (const InputError& e) {
+                error = e.located();
+            }
+            if (chunkBytes == kObjChunkBytes) {
+                ours = std::move(data);
+                ourWarnings = warn.lines();
+                out.raylabRefused = !error.empty();
+                out.raylabError = error;
+            } else if (error != out.raylabError) {
+                out.mismatch = "in small chunks raylab says '" + error + "', in one chunk '" +
+                               out.raylabError + "'";
+                return out;
+            } else if (!sameObjData(ours, data) || warn.lines() != ourWarnings) {
+                out.mismatch = "in small chunks raylab reads other data or warnings";
+                return out;
+            }
+        }
     }
 
     // tinyobj, with a first line that names the synthetic library.
@@ -354,7 +412,7 @@ inline ObjDifferential compareObjParsers(std::string_view text) {
             return out;
         }
         for (uint32_t k = 0; k < f.cornerCount; ++k) {
-            const ObjCorner& c = ours.corners[f.firstCorner + k];
+            const ObjCorner c = ours.corner(f.firstCorner + k);
             const tinyobj::index_t& x = shape->mesh.indices[next + k];
             if (int64_t(c.v) != x.vertex_index || c.vt != x.texcoord_index ||
                 c.vn != x.normal_index) {
