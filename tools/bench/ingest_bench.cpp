@@ -1,5 +1,6 @@
 #include "tools/bench/ingest_bench.h"
 
+#include <sys/resource.h>  // getrusage: the process CPU time
 #include <malloc.h>  // malloc_trim: freed memory back to the OS before each baseline
 #include <stdlib.h>  // mkdtemp
 
@@ -63,18 +64,29 @@ size_t resetPeak() {
     return statusBytes("VmRSS");
 }
 
+/// CPU seconds of the whole process so far (all threads, user + system).
+double processCpuSeconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 struct Sample {
     double seconds = 0;
+    double cpuSeconds = 0;  ///< of every thread: a loaded machine inflates it less than wall time
     double peakBytes = 0;  ///< peak RSS above the baseline
 };
 
 template <class F>
 Sample measure(F&& load) {
     const size_t base = resetPeak();
+    const double c0 = processCpuSeconds();
     const auto t0 = std::chrono::steady_clock::now();
     load();
     Sample s;
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    s.cpuSeconds = processCpuSeconds() - c0;
     const size_t peak = statusBytes("VmHWM");
     s.peakBytes = peak > base ? double(peak - base) : 0.0;
     return s;
@@ -165,15 +177,16 @@ int runIngestBench(const IngestBenchOptions& options, std::ostream& out) {
                   "OBJ: %s, %.1f MB, %zux%zu quads = %zu triangles, no vn (s 1), 4 materials\n",
                   objPath.c_str(), double(bytes) / 1e6, grid, grid, triangles);
     out << line << "medians of " << options.runs
-        << " runs, wall-clock; peak RSS above the baseline measured before each load\n";
-    std::snprintf(line, sizeof line, "%-8s %-22s %10s %10s %14s %12s\n", "threads", "phase",
-                  "seconds", "MB/s", "peak_MB", "bytes/tri");
+        << " runs; wall-clock and process CPU time (all threads); bytes/tri: peak RSS above the\n"
+           "baseline measured just before each load, per triangle\n";
+    std::snprintf(line, sizeof line, "%-8s %-18s %9s %9s %9s %9s %12s\n", "threads", "phase",
+                  "wall_s", "MB/s", "cpu_s", "cpu_MB/s", "bytes/tri");
     out << line;
 
     for (int threads : options.threads) {
         const int t = effectiveThreads(threads);
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(t));
-        std::vector<double> loadS, loadPeak, parseS, parsePeak;
+        std::vector<double> loadS, loadCpu, loadPeak, parseS, parseCpu, parsePeak;
         ObjLoadOptions quiet;
         quiet.printWarnings = false;
         for (int run = 0; run < options.runs; ++run) {
@@ -187,6 +200,7 @@ int runIngestBench(const IngestBenchOptions& options, std::ostream& out) {
                 throw InputError(objPath, 0, "loaded " + std::to_string(got) + " triangles, expected " +
                                                  std::to_string(triangles));
             loadS.push_back(s.seconds);
+            loadCpu.push_back(s.cpuSeconds);
             loadPeak.push_back(s.peakBytes);
             s = measure([&] {
                 const std::string text = readTextFile(objPath);
@@ -195,17 +209,19 @@ int runIngestBench(const IngestBenchOptions& options, std::ostream& out) {
                 got = d.faces.size();
             });
             parseS.push_back(s.seconds);
+            parseCpu.push_back(s.cpuSeconds);
             parsePeak.push_back(s.peakBytes);
         }
         const auto row = [&](const char* phase, const std::vector<double>& secs,
-                             const std::vector<double>& peak) {
-            const double m = median(secs), p = median(peak);
-            std::snprintf(line, sizeof line, "%-8d %-22s %10.3f %10.1f %14.1f %12.1f\n", t, phase,
-                          m, double(bytes) / 1e6 / m, p / 1e6, p / double(triangles));
+                             const std::vector<double>& cpu, const std::vector<double>& peak) {
+            const double m = median(secs), c = median(cpu), p = median(peak);
+            const double mb = double(bytes) / 1e6;
+            std::snprintf(line, sizeof line, "%-8d %-18s %9.3f %9.1f %9.3f %9.1f %12.1f\n", t,
+                          phase, m, mb / m, c, mb / c, p / double(triangles));
             out << line;
         };
-        row("loadObj (whole)", loadS, loadPeak);
-        row("read + parseObj", parseS, parsePeak);
+        row("loadObj (whole)", loadS, loadCpu, loadPeak);
+        row("read + parseObj", parseS, parseCpu, parsePeak);
     }
     out << "bar (issue 20): loadObj >= 100 MB/s on all cores, peak <= 150 bytes/triangle\n";
     if (removeDir) {
