@@ -13,6 +13,7 @@
 #include <unordered_set>
 
 #include "geometry/primitives.h"
+#include "renderer/huge_pages.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/wavefront_text.h"
 
@@ -387,14 +388,14 @@ ObjData parseObj(std::string_view text, const std::string& path, LoadWarnings& w
 
     // Pass 2: every chunk fills its slices of the arrays, sized exactly once.
     ObjData data;
-    data.positions.resize(size_t(totals.v));
-    data.normals.resize(size_t(totals.vn));
-    data.texcoords.resize(size_t(totals.vt));
-    data.faces.resize(size_t(totals.f));
-    data.cornerV.resize(size_t(totals.corners));
+    resizeHugePages(data.positions, size_t(totals.v));
+    resizeHugePages(data.normals, size_t(totals.vn));
+    resizeHugePages(data.texcoords, size_t(totals.vt));
+    resizeHugePages(data.faces, size_t(totals.f));
+    resizeHugePages(data.cornerV, size_t(totals.corners));
     if (totals.slashes) {
-        data.cornerVt.resize(size_t(totals.corners));
-        data.cornerVn.resize(size_t(totals.corners));
+        resizeHugePages(data.cornerVt, size_t(totals.corners));
+        resizeHugePages(data.cornerVn, size_t(totals.corners));
     }
     std::vector<std::unique_ptr<ChunkParser>> parsers(chunkCount);
     for (size_t c = 0; c < chunkCount; ++c) {
