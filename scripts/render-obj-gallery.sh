@@ -9,15 +9,18 @@
 # build/obj_gallery/ (not committed). Each model is rendered with the new
 # binary (NAME.png) and, where the rule changed the picture, with the old one
 # (NAME_before.png, or NAME_before.txt with its error when it refuses the file).
-# The warnings each render prints go to NAME.txt / NAME_before.txt next to the
-# pictures' sources in build/obj_gallery/ for the docs to quote.
+# The warnings each render prints go to build/obj_gallery/NAME.txt (and
+# NAME_before.txt) for the docs to quote. Every picture is 256x192 at 4 samples
+# per pixel (the wide bench 144x192); each command is the one docs/obj.md shows.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-new=${1:-$root/build/bin/raylab}
-old=${2:-/work/baseline/raylab-3183e91}
-models=$root/build/obj_gallery
-img=$root/docs/img/obj
+new=$(realpath -m "${1:-$root/build/bin/raylab}")
+old=$(realpath -m "${2:-/work/baseline/raylab-3183e91}")
+# Relative paths from the repository root, so the warnings read as in docs/obj.md.
+cd "$root"
+models=build/obj_gallery
+img=docs/img/obj
 size=(--width 256 --height 192 --spp 4)
 
 [ -x "$new" ] || { echo "render-obj-gallery: no raylab at $new (build it first)" >&2; exit 2; }
@@ -25,7 +28,7 @@ have_old=1
 [ -x "$old" ] || { echo "render-obj-gallery: no old raylab at $old: 'before' pictures skipped" >&2; have_old=0; }
 
 rm -rf "$models"
-python3 "$root/scenes/obj_gallery/make_gallery.py" "$models"
+python3 scenes/obj_gallery/make_gallery.py "$models"
 mkdir -p "$img"
 
 # render BINARY SCENE PICTURE [flags...]: PNG, warnings in PICTURE's .txt (in $models).
@@ -33,8 +36,8 @@ render() {
     local bin=$1 scene=$2 name=$3
     shift 3
     local log=$models/$name.txt
-    if (cd "$models" && "$bin" render "$scene" -o "$models/$name.exr" --png "$img/$name.png" \
-            "${size[@]}" --quiet "$@") 2>"$log"; then
+    if "$bin" render "$models/$scene" -o "$models/$name.exr" --png "$img/$name.png" \
+            "${size[@]}" --quiet "$@" 2>"$log"; then
         echo "  $name.png"
     else
         rm -f "$img/$name.png"
