@@ -34,6 +34,8 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
         r.spawn.epsilon = *o.epsilon;
     }
     if (o.effects) r.forceAllEffects = *o.effects == EffectsMode::All;
+    if (o.textureFilter) r.textures.filter = *o.textureFilter;
+    if (o.textureFootprint) r.textures.footprint = *o.textureFootprint;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "shading/color.h"
 #include "shading/light.h"
 #include "shading/material.h"
+#include "shading/texture.h"
 
 namespace raylab {
 
@@ -61,6 +62,7 @@ struct Scene {
     Color ambient{0, 0, 0};  ///< Ia
     std::vector<Light> lights;
     std::vector<Material> materials;
+    std::vector<Texture> textures;  ///< what Material::maps index; images shared by file
     std::vector<Object> objects;
 
     /// Total primitive count (analytic shapes + triangles).

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 #include "geometry/spawn.h"
 #include "shading/brdf.h"
 #include "shading/optics.h"
+
+#include <array>
 
 namespace raylab {
 
@@ -22,6 +25,11 @@ Color diffuseAt(const SurfaceInteraction& si, const Material& m) {
 
 }  // namespace
 
+template <unsigned... E>
+constexpr auto WhittedIntegrator::kernelTable(std::integer_sequence<unsigned, E...>) {
+    return std::array<Kernel, sizeof...(E)>{&WhittedIntegrator::start<E>...};
+}
+
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& accel,
                                      const RenderOptions& options, const EffectSet& effects)
     : m_scene(scene), m_accel(accel), m_options(options), m_effects(effects) {
@@ -29,29 +37,31 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
     // One instantiation of trace<E> per effect combination, chosen once here.
-    static_assert(kAllKernelEffects == 15, "update the dispatch table");
-    static constexpr Kernel table[16] = {
-        &WhittedIntegrator::trace<0>,  &WhittedIntegrator::trace<1>,
-        &WhittedIntegrator::trace<2>,  &WhittedIntegrator::trace<3>,
-        &WhittedIntegrator::trace<4>,  &WhittedIntegrator::trace<5>,
-        &WhittedIntegrator::trace<6>,  &WhittedIntegrator::trace<7>,
-        &WhittedIntegrator::trace<8>,  &WhittedIntegrator::trace<9>,
-        &WhittedIntegrator::trace<10>, &WhittedIntegrator::trace<11>,
-        &WhittedIntegrator::trace<12>, &WhittedIntegrator::trace<13>,
-        &WhittedIntegrator::trace<14>, &WhittedIntegrator::trace<15>,
-    };
-    m_kernel = table[m_effects.kernel & kAllKernelEffects];
+    constexpr unsigned kKernels = 2 * kTextures;
+    static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
+    m_kernel = table[m_effects.kernel & (kKernels - 1)];
+    if (m_effects.textures()) m_textures = std::make_unique<TextureShading>(scene, options);
 }
+
+WhittedIntegrator::~WhittedIntegrator() = default;
 
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const {
     // The near plane (NFF's hither) is a distance along the view axis.
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
     const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
-    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first);
+    return (this->*m_kernel)(cameraRay, tNear, counters, first);
 }
 
 template <unsigned E>
-Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
+Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, RayCounters& counters,
+                               FirstHit* first) const {
+    Footprint<E> footprint{};
+    if constexpr (textured(E)) footprint = m_textures->cameraFootprint(cameraRay);
+    return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first, footprint);
+}
+
+template <unsigned E>
+Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
                                     int depth, RayCounters& counters) const {
     Color result = m.ka * m_scene.ambient;  // ambient once, kept in shadow
@@ -103,17 +113,34 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
 
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, RayCounters& counters, FirstHit* first) const {
+                               double weight, RayCounters& counters, FirstHit* first,
+                               const Footprint<E>& footprint) const {
     counters.count(type, depth);
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) counters.cameraHits++;
 
-    const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect);
-    const Material& m = m_scene.materials[si.material];
-    // Normals on the side the ray arrives from; `entering` is false when the
-    // ray is inside the object (it hit the back of the outward normal).
+    SurfaceInteraction si = m_scene.surfaceAt(
+        ray, *hit, m_options.accelOptions.intersect,
+        textured(E) ? SurfaceDetail::Complete : SurfaceDetail::Normals);
+    // `entering` is false when the ray is inside the object (it hit the back
+    // of the outward normal).
     const bool entering = si.frontFace;
+    const SurfaceOptics* optics = &m_scene.materials[si.material];
+    [[maybe_unused]] HitFootprintOf<E> hitFootprint{};
+    [[maybe_unused]] SurfaceOptics texturedOptics;
+    if constexpr (textured(E)) {
+        // Untextured materials pass the footprint on too (a plain mirror
+        // showing a textured object).
+        hitFootprint = m_textures->atHit(footprint, ray, hit->t, si, entering);
+        const Material& material = m_scene.materials[si.material];
+        if (material.maps.any()) {
+            texturedOptics = m_textures->shade(material, si, hitFootprint);
+            optics = &texturedOptics;
+        }
+    }
+    const SurfaceOptics& m = *optics;
+    // Normals on the side the ray arrives from.
     const Vec3 n = entering ? si.ns : -si.ns;
     const Vec3 ng = entering ? si.ng : -si.ng;
     const Vec3 dir = normalize(ray.d);
@@ -149,8 +176,12 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                     const double w = weight * m.kt.maxComponent();
                     if (!m_prune || m_options.spd || w >= m_options.minWeight) {
                         const SpawnedRay r = spawn(*t);
+                        Footprint<E> next{};
+                        if constexpr (textured(E))
+                            next = m_textures->refracted(footprint, hitFootprint, dir, n, *t,
+                                                         etaI / etaT);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  counters, nullptr);
+                                                  counters, nullptr, next);
                     }
                 } else {
                     reflectWeight += m.kt;  // total internal reflection
@@ -163,8 +194,11 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
             if (!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
+                Footprint<E> next{};
+                if constexpr (textured(E))
+                    next = m_textures->reflected(footprint, hitFootprint, dir, n);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   counters, nullptr);
+                                                   counters, nullptr, next);
             }
         }
     }
