@@ -132,7 +132,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     if constexpr (textured(E)) {
         // Untextured materials pass the footprint on too (a plain mirror
         // showing a textured object).
-        hitFootprint = m_textures->atHit(footprint, ray, hit->t, si, entering);
+        hitFootprint = m_textures->atHit(footprint, ray, si.t, si, entering);
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any()) {
             texturedOptics = m_textures->shade(material, si, hitFootprint);
