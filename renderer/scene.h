@@ -69,6 +69,8 @@ struct Scene {
     size_t primitiveCount() const;
     /// Bounds of all objects.
     Bounds3 bounds() const;
+    /// Bytes of the textures' MIP pyramids, each shared image once.
+    double textureBytes() const;
     /// Surface data for a hit found by any accelerator, from the hit object's
     /// shape (triangle hits are recomputed in double from the chosen triangle,
     /// so Embree and the naive loop hand identical data to shading whenever
