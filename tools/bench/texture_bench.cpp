@@ -28,9 +28,9 @@ struct Lookup {
 
 /// Random points, footprints of 0.5 to 16 texels, anisotropy up to 8, any angle.
 std::vector<Lookup> makeLookups(int n, int size) {
-    Pcg32 rng(42, 7);
-    const auto uniform = [&] { return double(rng.next()) / 4294967296.0; };
-    std::vector<Lookup> v(size_t(n));
+    SplitMix64 rng(42);
+    const auto uniform = [&] { return rng.uniform(); };
+    std::vector<Lookup> v(static_cast<size_t>(n));
     for (Lookup& l : v) {
         l.s = float(uniform());
         l.t = float(uniform());
@@ -131,7 +131,7 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
     ts->attribute("accept_untiled", 1);
     const OIIO::ustring name(path);
     OIIO::TextureSystem::TextureHandle* handle = ts->get_texture_handle(name);
-    OIIO::TextureSystem::Perthread* thread = ts->get_perthread_info();
+    OIIO::TextureSystem::Perthread* thread = ts->create_thread_info();
 
     const std::vector<Lookup> lookups = makeLookups(o.lookups, n);
     // The first OIIO lookup reads the file and builds its MIP levels.
@@ -180,7 +180,7 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
                       ownNs, oiioNs, oiioNs / ownNs, diff, sink == 12345.678 ? " " : "");
         out << line;
     }
-    ts->destroy_perthread_info(thread);
+    ts->destroy_thread_info(thread);
     OIIO::TextureSystem::destroy(ts);
 }
 
