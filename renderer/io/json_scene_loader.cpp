@@ -436,6 +436,7 @@ void SceneReader::readMeshFile(const JsonFields& f, const std::string& name) {
     const std::string& file = string(fileValue, f.path("file"));
     if (file.empty()) fail(fileValue, f.path("file"), "must not be empty");
     ObjLoadOptions options;
+    options.textureFiles = &m_textureFiles;  // files shared with the JSON materials
     if (const JsonValue* t = f.get("transform"))
         options.transform = readTransform(*t, f.path("transform"));
     if (const JsonValue* n = f.get("normals"))
