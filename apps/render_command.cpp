@@ -116,7 +116,7 @@ const char* const kRenderHelp =
     "                           on the full image, or filtered over each sample's footprint:\n"
     "                           trilinear MIP mapping or EWA (default trilinear)\n"
     "  --texture-footprint cones|differentials   how footprints travel with rays: ray cones or\n"
-    "                           Igehy's ray differentials (default cones)\n"
+    "                           Igehy's ray differentials (default differentials)\n"
     "\n"
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"

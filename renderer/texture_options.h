@@ -18,7 +18,7 @@ enum class TextureFootprint {
 
 struct TextureOptions {
     TextureFilter filter = TextureFilter::Trilinear;
-    TextureFootprint footprint = TextureFootprint::Cones;
+    TextureFootprint footprint = TextureFootprint::Differentials;  // docs/accuracy.md: the knee
 };
 
 const char* textureFilterName(TextureFilter f);

@@ -105,7 +105,7 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
           "--spp 1 --depth 5 --precision double --bvh-quality medium --shadows filtered");
     CHECK(referenceAccuracySetting(64).flags() ==
           "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered "
-          "--texture-filter point --texture-footprint cones");
+          "--texture-filter point --texture-footprint differentials");
     for (const auto& [quick, textured] : {std::pair{false, false}, std::pair{true, false},
                                           std::pair{false, true}}) {
         const auto settings = accuracySweepSettings(quick, textured);
