@@ -1,10 +1,7 @@
 #pragma once
 // The texture knobs of a render (--texture-filter, --texture-footprint and
-// the JSON "render" keys of the same names), and their names, shared by the
-// command line, the scene reader and the statistics.
-
-#include <optional>
-#include <string>
+// the JSON "render" keys of the same names) and their names; the command line
+// and the scene reader parse them through render_option_names.h.
 
 #include "shading/texture.h"
 
@@ -23,8 +20,5 @@ struct TextureOptions {
 
 const char* textureFilterName(TextureFilter f);
 const char* textureFootprintName(TextureFootprint f);
-/// nullopt for an unknown name.
-std::optional<TextureFilter> parseTextureFilter(const std::string& name);
-std::optional<TextureFootprint> parseTextureFootprint(const std::string& name);
 
 }  // namespace raylab

@@ -18,8 +18,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// The diffuse reflectance at a hit: kd times the surface's colour (a mesh's
-/// vertex colours; white, which leaves kd as it is, everywhere else).
-Color diffuseAt(const SurfaceInteraction& si, const Material& m) {
+/// vertex colours; white, which leaves kd as it is, everywhere else), kd
+/// already textured for textured materials.
+Color diffuseAt(const SurfaceInteraction& si, const SurfaceOptics& m) {
     return m.kd * Color(si.color.x, si.color.y, si.color.z);
 }
 

@@ -1,13 +1,10 @@
 #include "renderer/io/image_reader.h"
 
 #include <OpenImageIO/imageio.h>
-#include <sys/stat.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "renderer/io/errors.h"
 #include "renderer/io/text_file.h"
@@ -28,20 +25,6 @@ std::string oiioError(const OIIO::ImageInput* in) {
     return e.empty() ? "unknown image format or broken file" : e;
 }
 
-/// Refuses what must not reach a decoder: devices, FIFOs (which would block),
-/// directories, missing files and files beyond the scene-file size limit.
-void checkRegularFile(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw InputError(path, 0, "cannot open: is a directory");
-    if (!S_ISREG(st.st_mode))
-        throw InputError(path, 0, "cannot open: not a regular file (a device, FIFO or socket)");
-    if (uint64_t(st.st_size) > kMaxTextFileBytes)
-        throw InputError(path, 0, "file is " + mib(double(st.st_size)) + " MiB, larger than the " +
-                                      mib(double(kMaxTextFileBytes)) + " MiB an input may have");
-}
-
 }  // namespace
 
 double textureBytes(int width, int height, int channels) {
@@ -50,7 +33,11 @@ double textureBytes(int width, int height, int channels) {
 
 ImageData readImage(const std::string& path, ImageRole role,
                     const std::optional<MemoryLimit>& limit) {
-    checkRegularFile(path);
+    // Devices, FIFOs (which would block), directories, missing files and files
+    // beyond the input size limit never reach a decoder. The bytes are read
+    // here once so the file is recorded as an input of the run by identity
+    // and content (outputs may not overwrite it; MPI ranks compare it).
+    (void)readTextFile(path);
     // PNG and TIFF alpha is stored unassociated; keep it so, or OpenImageIO
     // would premultiply the colour of every partly transparent texel.
     OIIO::ImageSpec config;

@@ -16,7 +16,7 @@
 #include "renderer/io/image_reader.h"
 #include "renderer/timing.h"
 #include "shading/mipmap.h"
-#include "tools/report/bench_util.h"
+#include "tools/report/machine.h"
 
 namespace raylab {
 
