@@ -1,8 +1,5 @@
 #include "tools/bench/texture_bench.h"
 
-#include <OpenImageIO/imageio.h>
-#include <OpenImageIO/texture.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +10,7 @@
 #include <vector>
 
 #include "geometry/random.h"
+#include "renderer/io/image_module_loader.h"
 #include "renderer/io/image_reader.h"
 #include "renderer/timing.h"
 #include "shading/mipmap.h"
@@ -67,29 +65,14 @@ Texel ownLookup(const MipMap& m, Mode mode, const Lookup& l) {
     return m.ewa(st, dx, dy, WrapMode::Repeat);
 }
 
-OIIO::TextureOpt oiioOptions(Mode mode) {
-    OIIO::TextureOpt opt;
-    opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
+image_module::Filter moduleFilter(Mode mode) {
     switch (mode) {
-    case Mode::Point:
-        opt.mipmode = OIIO::TextureOpt::MipModeNoMIP;
-        opt.interpmode = OIIO::TextureOpt::InterpClosest;
-        break;
-    case Mode::Bilinear:
-        opt.mipmode = OIIO::TextureOpt::MipModeNoMIP;
-        opt.interpmode = OIIO::TextureOpt::InterpBilinear;
-        break;
-    case Mode::Trilinear:
-        opt.mipmode = OIIO::TextureOpt::MipModeTrilinear;
-        opt.interpmode = OIIO::TextureOpt::InterpBilinear;
-        break;
-    case Mode::Anisotropic:
-        opt.mipmode = OIIO::TextureOpt::MipModeAniso;
-        opt.interpmode = OIIO::TextureOpt::InterpBilinear;
-        opt.anisotropic = 8;
-        break;
+    case Mode::Point: return image_module::Filter::Point;
+    case Mode::Bilinear: return image_module::Filter::Bilinear;
+    case Mode::Trilinear: return image_module::Filter::Trilinear;
+    case Mode::Anisotropic: break;
     }
-    return opt;
+    return image_module::Filter::Anisotropic;
 }
 
 }  // namespace
@@ -108,13 +91,11 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
         }
     const std::string path =
         (std::filesystem::temp_directory_path() / ("raylab_texbench_" + std::to_string(::getpid()) + ".exr")).string();
-    {
-        auto file = OIIO::ImageOutput::create(path);
-        OIIO::ImageSpec spec(n, n, 3, OIIO::TypeDesc::FLOAT);
-        if (!file || !file->open(path, spec) ||
-            !file->write_image(OIIO::TypeDesc::FLOAT, texels.data()) || !file->close())
-            throw std::runtime_error("bench textures: cannot write " + path);
-    }
+    // OpenImageIO's side runs in raylab's image module (image_module.h).
+    const image_module::Api& oiio = imageModule(path);
+    std::string error;
+    if (!oiio.writeFloat(path, n, n, 3, texels.data(), error))
+        throw std::runtime_error("bench textures: cannot write " + path + ": " + error);
     struct Remove {
         std::string p;
         ~Remove() { std::filesystem::remove(p); }
@@ -126,19 +107,14 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
     const MipMap mip(image.width, image.height, image.channels, std::move(image.texels));
     const double ownLoad = threadCpuSeconds() - t0;
 
-    OIIO::TextureSystem* ts = OIIO::TextureSystem::create(false);
-    ts->attribute("automip", 1);
-    ts->attribute("accept_untiled", 1);
-    const OIIO::ustring name(path);
-    OIIO::TextureSystem::TextureHandle* handle = ts->get_texture_handle(name);
-    OIIO::TextureSystem::Perthread* thread = ts->create_thread_info();
+    const std::unique_ptr<image_module::TextureSystemFile> ts = oiio.openTextureSystem(path, error);
+    if (!ts) throw std::runtime_error("bench textures: OpenImageIO's TextureSystem: " + error);
 
     const std::vector<Lookup> lookups = makeLookups(o.lookups, n);
     // The first OIIO lookup reads the file and builds its MIP levels.
     t0 = threadCpuSeconds();
     float warm[3];
-    OIIO::TextureOpt first = oiioOptions(Mode::Trilinear);
-    ts->texture(handle, thread, first, 0.5f, 0.5f, 0, 0, 0, 0, 3, warm);
+    ts->lookup(image_module::Filter::Trilinear, 0.5f, 0.5f, 0, 0, 0, 0, 3, warm);
     const double oiioLoad = threadCpuSeconds() - t0;
 
     out << "Texture lookups: " << n << "x" << n << " RGB float image, " << o.lookups
@@ -152,7 +128,7 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
     out << "|---|---:|---:|---:|---:|\n";
     for (Mode mode : {Mode::Point, Mode::Bilinear, Mode::Trilinear, Mode::Anisotropic}) {
         double bestOwn = 1e30, bestOiio = 1e30, sink = 0;
-        const OIIO::TextureOpt opt = oiioOptions(mode);
+        const image_module::Filter filter = moduleFilter(mode);
         for (int run = 0; run < o.runs; ++run) {
             t0 = threadCpuSeconds();
             for (const Lookup& l : lookups) sink += ownLookup(mip, mode, l)[0];
@@ -160,8 +136,7 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
             t0 = threadCpuSeconds();
             for (const Lookup& l : lookups) {
                 float r[3];
-                OIIO::TextureOpt local = opt;
-                ts->texture(handle, thread, local, l.s, l.t, l.dsdx, l.dtdx, l.dsdy, l.dtdy, 3, r);
+                ts->lookup(filter, l.s, l.t, l.dsdx, l.dtdx, l.dsdy, l.dtdy, 3, r);
                 sink += r[0];
             }
             bestOiio = std::min(bestOiio, threadCpuSeconds() - t0);
@@ -169,8 +144,7 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
         double diff = 0;
         for (const Lookup& l : lookups) {
             float r[3];
-            OIIO::TextureOpt local = opt;
-            ts->texture(handle, thread, local, l.s, l.t, l.dsdx, l.dtdx, l.dsdy, l.dtdy, 3, r);
+            ts->lookup(filter, l.s, l.t, l.dsdx, l.dtdx, l.dsdy, l.dtdy, 3, r);
             const Texel own = ownLookup(mip, mode, l);
             for (int c = 0; c < 3; ++c) diff += std::abs(own[size_t(c)] - r[c]);
         }
@@ -180,8 +154,6 @@ void runTextureBench(const TextureBenchOptions& o, std::ostream& out) {
                       ownNs, oiioNs, oiioNs / ownNs, diff, sink == 12345.678 ? " " : "");
         out << line;
     }
-    ts->destroy_thread_info(thread);
-    OIIO::TextureSystem::destroy(ts);
 }
 
 }  // namespace raylab
