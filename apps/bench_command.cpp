@@ -11,8 +11,10 @@
 #include "renderer/io/errors.h"
 #include "tools/bench/accel_bench.h"
 #include "tools/bench/effects_bench.h"
+#include "tools/bench/ingest_bench.h"
 #include "tools/bench/limit_bench.h"
 #include "tools/bench/primitive_bench.h"
+#include "tools/bench/texture_bench.h"
 
 namespace raylab {
 
@@ -28,6 +30,10 @@ const char* const kBenchHelp =
     "                        replaying the same rays\n"
     "  effects SCENE...      specialised kernel vs general kernel (every ray type at every hit)\n"
     "  primitives            ns per intersect() call of every analytic primitive\n"
+    "  textures              ns per texture lookup: raylab's MIP pyramid vs OpenImageIO's\n"
+    "                        TextureSystem, every filter\n"
+    "  ingest                OBJ ingest: MB/s and peak memory per triangle loading a generated\n"
+    "                        2-million-triangle height-field OBJ\n"
     "\n"
     "Run 'raylab bench <benchmark> --help' for its options. Benchmarks print medians of repeated\n"
     "runs; they assert nothing (the tests do).\n";
@@ -89,6 +95,25 @@ const char* const kBenchPrimitivesHelp =
     "\n"
     "ns per intersect() call of every analytic primitive, for rays that hit and rays\n"
     "that miss, in double and float precision, and both polygon inside tests.\n";
+
+const char* const kBenchTexturesHelp =
+    "usage: raylab bench textures [--size N] [--lookups N] [--runs N]\n"
+    "\n"
+    "ns per texture lookup of raylab's own MIP pyramid and of OpenImageIO's TextureSystem on\n"
+    "the same N x N linear float image (default 1024), for point, bilinear, trilinear and\n"
+    "anisotropic filtering, on the same random points and footprints (0.5 to 16 texels,\n"
+    "anisotropy up to 8); one thread, fastest of --runs (default 5) runs of --lookups\n"
+    "(default 200000) lookups; the mean absolute difference of the two answers.\n";
+const char* const kBenchIngestHelp =
+    "usage: raylab bench ingest [--triangles N] [--runs N] [--threads N] [--dir DIR]\n"
+    "\n"
+    "Writes a height-field OBJ (quads, `s 1`, no vn, four materials in an MTL) of about N\n"
+    "triangles (default 2000000) and loads it as `raylab render terrain.obj` does (parse,\n"
+    "triangulation, smoothing-group normals, material assignment), --runs times (default 5),\n"
+    "with 1 thread and with all cores (or only --threads N). Prints the median wall time, MB/s\n"
+    "of OBJ text and the median peak RSS above the baseline measured just before each load,\n"
+    "per triangle; also the parse stage alone (read + parseObj). Performance bar (issue 20):\n"
+    ">= 100 MB/s on all cores, <= 150 bytes/triangle. --dir keeps the files there.\n";
 
 void help(const char* text) {
     std::fputs(text, stdout);
@@ -168,10 +193,44 @@ int benchPrimitives(const std::vector<std::string>& args) {
     return 0;
 }
 
+int benchTextures(const std::vector<std::string>& args) {
+    TextureBenchOptions o;
+    ArgParser p(args);
+    while (!p.done()) {
+        const std::string a = p.next();
+        if (isHelp(a)) help(kBenchTexturesHelp);
+        else if (a == "--size") o.size = int(p.integer(a, 2, 8192));
+        else if (a == "--lookups") o.lookups = int(p.integer(a, 1, 100000000));
+        else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
+        else throw UsageError("bench textures: unknown argument '" + a + "'");
+    }
+    runTextureBench(o, std::cout);
+    return 0;
+}
+
+int benchIngest(const std::vector<std::string>& args) {
+    IngestBenchOptions o;
+    ArgParser p(args);
+    while (!p.done()) {
+        const std::string a = p.next();
+        if (isHelp(a)) help(kBenchIngestHelp);
+        else if (a == "--triangles") o.triangles = size_t(p.integer(a, 2, 200000000));
+        else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
+        else if (a == "--threads") o.threads = {int(p.integer(a, 0, 4096))};
+        else if (a == "--dir") {
+            o.dir = p.value(a);
+            o.keep = true;
+        } else throw UsageError("bench ingest: unknown argument '" + a + "'");
+    }
+    return runIngestBench(o, std::cout);
+}
+
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args) {
-    if (args.empty()) throw UsageError("bench: expected a benchmark: accel, limit, effects or primitives");
+    if (args.empty())
+        throw UsageError(
+            "bench: expected a benchmark: accel, limit, effects, primitives, textures or ingest");
     const std::string which = args.front();
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (isHelp(which)) help(kBenchHelp);
@@ -179,7 +238,10 @@ int benchCommand(const std::vector<std::string>& args) {
     if (which == "limit") return benchLimit(rest);
     if (which == "effects") return benchEffects(rest);
     if (which == "primitives") return benchPrimitives(rest);
-    throw UsageError("bench: unknown benchmark '" + which + "' (expected accel, limit, effects or primitives)");
+    if (which == "textures") return benchTextures(rest);
+    if (which == "ingest") return benchIngest(rest);
+    throw UsageError("bench: unknown benchmark '" + which +
+                     "' (expected accel, limit, effects, primitives, textures or ingest)");
 }
 
 }  // namespace raylab

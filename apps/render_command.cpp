@@ -78,8 +78,11 @@ const char* const kRenderHelp =
     "                           keeps the background colour in RGB with A = object coverage;\n"
     "                           transparent leaves it out (RGB premultiplied by A, for an \"over\");\n"
     "                           opaque keeps it with A = 1\n"
+    "  --compression none|rle|zips|zip|piz   lossless EXR compression (default zip; none and rle\n"
+    "                           write fastest, zip and piz smallest: docs/benchmarks.md)\n"
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects,\n"
-    "                           the objects with their objectId and Cryptomatte id)\n"
+    "                           samples that reached the ray cap, the objects with their objectId\n"
+    "                           and Cryptomatte id)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
     "                           (and every other output numbered alike)\n"
     "  --quiet                  no progress bar and no summary\n"
@@ -95,6 +98,9 @@ const char* const kRenderHelp =
     "                           by more than T (0 = off)\n"
     "  --adaptive-levels L      maximum subdivision levels for --adaptive (1..8, default 2)\n"
     "  --min-weight W           prune rays whose accumulated weight is below W (default 0 = off)\n"
+    "  --max-rays N             rays (every type) one camera sample may trace before its reflection\n"
+    "                           and refraction rays stop (1..2^40, default 65536): bounds the work\n"
+    "                           of a pixel; samples that reach it are counted and warned about\n"
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
     "\n"
@@ -125,6 +131,13 @@ const char* const kRenderHelp =
     "                           inside test (default), the lecture's projected 2D test, or ear-\n"
     "                           clipped into Embree triangles (two-sided)\n"
     "\n"
+    "textures (docs/accuracy.md#textures):\n"
+    "  --texture-filter point|bilinear|trilinear|anisotropic   lookups: nearest texel or bilinear\n"
+    "                           on the full image, or filtered over each sample's footprint:\n"
+    "                           trilinear MIP mapping or EWA (default trilinear)\n"
+    "  --texture-footprint cones|differentials   how footprints travel with rays: ray cones or\n"
+    "                           Igehy's ray differentials (default differentials)\n"
+    "\n"
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
     "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
@@ -142,6 +155,7 @@ struct RenderCli {
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
     bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
+    ExrCompression compression = ExrCompression::Zip;
     double exposure = 0;
     RenderOverrides overrides;
     CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
@@ -203,12 +217,19 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
+        else if (a == "--compression") {
+            const std::string v = p.choice(a, {std::begin(kExrCompressionNames),
+                                               std::end(kExrCompressionNames)});
+            for (size_t i = 0; i < std::size(kExrCompressionNames); ++i)
+                if (v == kExrCompressionNames[i]) cli.compression = ExrCompression(i);
+        }
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
         else if (a == "--width") o.width = int(p.integer(a, 1, kMaxImageSide));
         else if (a == "--height") o.height = int(p.integer(a, 1, kMaxImageSide));
         else if (a == "--spp") o.spp = int(p.integer(a, 1, kMaxSpp));
         else if (a == "--depth") o.maxDepth = int(p.integer(a, 1, kMaxDepth));
         else if (a == "--seed") o.seed = uint64_t(p.integer(a, 0, kMaxSeed));
+        else if (a == "--max-rays") o.maxRaysPerSample = uint64_t(p.integer(a, 1, kMaxRaysPerSampleLimit));
         else if (a == "--adaptive") o.adaptiveThreshold = p.number(a, 0, 1e30);
         else if (a == "--adaptive-levels") o.adaptiveMaxLevel = int(p.integer(a, 1, kMaxAdaptiveLevels));
         else if (a == "--min-weight") o.minWeight = p.number(a, 0, 1);
@@ -236,6 +257,9 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--up")
             cli.upAxis = upAxisNamed(p.choice(a, {"x", "y", "z", "-x", "-y", "-z"}));
+        else if (a == "--texture-filter") o.textureFilter = p.choice(a, textureFilterNames());
+        else if (a == "--texture-footprint")
+            o.textureFootprint = p.choice(a, textureFootprintNames());
         else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());  // hidden: the general kernel
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (cli.scene.empty()) cli.scene = a;
@@ -284,6 +308,17 @@ SceneLoadOptions sceneLoadOptions(const RenderCli& cli) {
     return o;
 }
 
+/// The one warning of a run whose samples reached the ray cap (`frame` 0:
+/// not a sequence).
+std::string rayCapWarning(const RenderResult& r, const RenderOptions& o, int frame) {
+    const uint64_t samples = r.rays.total(RayType::Camera);
+    return "raylab: warning: " + std::string(frame ? "frame " + std::to_string(frame) + ": " : "") +
+           std::to_string(r.cappedSamples) + " of " + std::to_string(samples) +
+           " camera samples reached the cap of " + std::to_string(o.maxRaysPerSample) +
+           " rays per sample; their deeper reflections and refractions were not traced "
+           "(--max-rays, --depth)\n";
+}
+
 void printSummary(const RenderStats& s, const std::vector<std::string>& outputs) {
     std::printf("raylab: %dx%d, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
                 s.height, s.spp, s.maxDepth, s.accel.c_str(), s.threads,
@@ -291,6 +326,10 @@ void printSummary(const RenderStats& s, const std::vector<std::string>& outputs)
     std::string effects;
     for (const std::string& e : s.effects) effects += (effects.empty() ? "" : ", ") + e;
     std::printf("  effects:  %s\n", effects.empty() ? "(none: local shading only)" : effects.c_str());
+    if (s.textures)
+        std::printf("  textures: %llu (%.1f MiB), filter %s, footprint %s\n",
+                    (unsigned long long)s.textures->count, s.textures->mebibytes,
+                    s.textures->filter.c_str(), s.textures->footprint.c_str());
     std::printf("  time:     parse %.3f s, build %.3f s, render %.3f s, write %.3f s\n",
                 s.parseSeconds, s.buildSeconds, s.renderSeconds, s.writeSeconds);
     std::printf("  rays:     camera %llu (hits %llu), shadow %llu, reflection %llu, refraction %llu\n",
@@ -302,6 +341,9 @@ void printSummary(const RenderStats& s, const std::vector<std::string>& outputs)
     if (s.filter.attenuated > 0 || s.filter.cutOut > 0)
         std::printf("  filter:   %llu transmitter crossings dimmed shadow rays, %llu candidates cut out\n",
                     (unsigned long long)s.filter.attenuated, (unsigned long long)s.filter.cutOut);
+    std::printf("  samples:  at most %llu rays in one sample, %llu capped at %llu\n",
+                (unsigned long long)s.maxSampleRays, (unsigned long long)s.cappedSamples,
+                (unsigned long long)s.maxRaysPerSample);
     std::printf("  speed:    %.2f Mrays/s\n", s.mraysPerSecond());
     std::string list;
     for (const std::string& o : outputs) list += (list.empty() ? "" : ", ") + o;
@@ -382,6 +424,7 @@ int renderCommand(const std::vector<std::string>& args) {
     stats.buildSeconds = secondsSince(t0);
 
     const EffectSet effects = analyseEffects(scene, options);
+    bool warnedCap = false;
     for (int frame = frames.first; frame <= frames.last; ++frame) {
         // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
         const auto output = [&](const std::string& file) {
@@ -414,12 +457,26 @@ int renderCommand(const std::vector<std::string>& args) {
         stats.spp = options.spp;
         stats.maxDepth = options.maxDepth;
         stats.nonFiniteSamples = result.nonFiniteSamples;
+        stats.maxRaysPerSample = options.maxRaysPerSample;
+        stats.cappedSamples = result.cappedSamples;
+        stats.maxSampleRays = result.maxSampleRays;
+        // Once per run (the statistics have every frame's count): a capped
+        // sample lost part of its reflections and refractions.
+        if (result.cappedSamples > 0 && !warnedCap) {
+            warnedCap = true;
+            std::fprintf(stderr, "%s", rayCapWarning(result, options, cli.frames ? frame : 0).c_str());
+        }
         stats.filter = accel->filterCounts() - filterBefore;
         std::vector<std::string> objectNames;
         for (const Object& object : scene.objects) objectNames.push_back(object.name);
         stats.objects.clear();
         for (size_t k = 0; k < objectNames.size(); ++k)
             stats.objects.push_back(matteName(objectNames, int(k)));
+        if (effects.textures())
+            stats.textures = RenderStats::Textures{
+                textureFilterName(options.textures.filter),
+                textureFootprintName(options.textures.footprint), scene.textures.size(),
+                scene.textureBytes() / (1 << 20)};
 
         enterPhase(Phase::Write);
         t0 = Clock::now();
@@ -430,6 +487,7 @@ int renderCommand(const std::vector<std::string>& args) {
         exr.software = raylabSoftware();
         exr.settings = renderSettingsText(options);
         exr.alpha = alphaModeName(options.alpha);
+        exr.compression = cli.compression;
         exr.spp = options.spp;
         exr.maxDepth = options.maxDepth;
         exr.threads = options.threads;

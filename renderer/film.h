@@ -7,9 +7,13 @@
 #include <vector>
 
 #include "geometry/vec.h"
+#include "renderer/huge_page_allocator.h"
 #include "shading/color.h"
 
 namespace raylab {
+
+/// One layer of the film: megabytes per frame, so on huge pages (huge_page_allocator.h).
+using FilmPlane = std::vector<float, HugePageAllocator<float>>;
 
 /// Depth and distance of a pixel where nothing is hit: finite, the value
 /// Blender's Cycles writes for the background (1e10), so that statistics and
@@ -31,15 +35,15 @@ struct MatteEntry {
 
 struct Film {
     int width = 0, height = 0;
-    std::vector<float> rgba;      ///< 4 floats per pixel; A per the alpha mode (alpha_mode.h)
-    std::vector<float> z;         ///< planar camera depth of the first hit, kNoHitDepth where nothing is hit
-    std::vector<float> distance;  ///< Euclidean eye distance of the first hit, kNoHitDepth where nothing is hit
-    std::vector<float> normal;    ///< 3 floats per pixel: world shading normal of the first hit
-    std::vector<float> albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
-    std::vector<float> objectId;  ///< index of the first object hit, -1 for background
+    FilmPlane rgba;      ///< 4 floats per pixel; A per the alpha mode (alpha_mode.h)
+    FilmPlane z;         ///< planar camera depth of the first hit, kNoHitDepth where nothing is hit
+    FilmPlane distance;  ///< Euclidean eye distance of the first hit, kNoHitDepth where nothing is hit
+    FilmPlane normal;    ///< 3 floats per pixel: world shading normal of the first hit
+    FilmPlane albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
+    FilmPlane objectId;  ///< index of the first object hit, -1 for background
     /// kMatteRanks entries per pixel, by decreasing coverage (ties: lower
     /// object index first); from every sample of the pixel.
-    std::vector<MatteEntry> mattes;
+    std::vector<MatteEntry, HugePageAllocator<MatteEntry>> mattes;
 
     Film() = default;
     Film(int w, int h)

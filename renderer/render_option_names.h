@@ -15,6 +15,7 @@
 #include "renderer/alpha_mode.h"
 #include "renderer/render_overrides.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -33,6 +34,10 @@ const OptionNames<Precision>& precisionNames();
 const OptionNames<EffectsMode>& effectsModeNames();
 /// --shadows, "shadows": opaque, filtered.
 const OptionNames<ShadowMode>& shadowModeNames();
+/// --texture-filter, "texture_filter": point, bilinear, trilinear, anisotropic.
+const OptionNames<TextureFilter>& textureFilterNames();
+/// --texture-footprint, "texture_footprint": cones, differentials.
+const OptionNames<TextureFootprint>& textureFootprintNames();
 
 /// --alpha: background, transparent, opaque.
 const OptionNames<AlphaMode>& alphaModeNames();

@@ -2,6 +2,7 @@
 // Everything that controls one render, after the scene file's settings and the
 // command-line flags have been merged (flags win).
 
+#include <cstdint>
 #include <string>
 
 #include "geometry/spawn.h"
@@ -9,6 +10,7 @@
 #include "renderer/accelerator_kind.h"
 #include "renderer/alpha_mode.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -19,6 +21,13 @@ constexpr int kMaxSpp = 65536;
 constexpr int kMaxDepth = 64;  ///< RenderStats counts rays per depth up to this
 constexpr int kMaxAdaptiveLevels = 8;
 constexpr long long kMaxSeed = 1LL << 53;  ///< JSON numbers are doubles: exact up to here
+/// Rays (of every type) one camera sample may trace before its reflection and
+/// refraction rays stop: a glass sphere inside a mirror doubles its ray tree
+/// at every level, so without a cap depth 64 never ends. No shipped picture
+/// and no SPD scene comes near it (docs/robustness.md, "Bounded work per
+/// sample"); --max-rays changes it.
+constexpr uint64_t kDefaultMaxRaysPerSample = 1u << 16;
+constexpr long long kMaxRaysPerSampleLimit = 1LL << 40;  ///< the largest --max-rays
 
 struct RenderOptions {
     int width = 640;
@@ -29,6 +38,7 @@ struct RenderOptions {
     double adaptiveThreshold = 0;  ///< Whitted adaptive supersampling threshold (0 = off)
     int adaptiveMaxLevel = 2;      ///< subdivision levels below the pixel corners
     uint64_t seed = 0;        ///< jitter seed; the image is a pure function of it
+    uint64_t maxRaysPerSample = kDefaultMaxRaysPerSample;  ///< see kDefaultMaxRaysPerSample
 
     int threads = 0;          ///< 0 = all cores
     AcceleratorKind accel = AcceleratorKind::Embree;
@@ -36,6 +46,7 @@ struct RenderOptions {
     SpawnSettings spawn;      ///< self-intersection strategy
     ShadowMode shadows = ShadowMode::Filtered;  ///< SPD's procedure: opaque
     AlphaMode alpha = AlphaMode::Background;    ///< what A means where rays miss (--alpha)
+    TextureOptions textures;  ///< filter and footprint of texture lookups
 
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)

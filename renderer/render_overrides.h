@@ -11,6 +11,7 @@
 #include "renderer/accelerator_kind.h"
 #include "renderer/alpha_mode.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -24,6 +25,7 @@ struct RenderOverrides {
     std::optional<int> width, height, spp, maxDepth, threads, adaptiveMaxLevel;
     std::optional<double> adaptiveThreshold, minWeight, epsilon;
     std::optional<uint64_t> seed;
+    std::optional<uint64_t> maxRaysPerSample;  ///< --max-rays, JSON render.max_rays
     std::optional<AcceleratorKind> accel;
     std::optional<AccelOptions::BvhQuality> bvhQuality;
     std::optional<Precision> precision;
@@ -31,6 +33,8 @@ struct RenderOverrides {
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
     std::optional<AlphaMode> alpha;          ///< --alpha background|transparent|opaque
+    std::optional<TextureFilter> textureFilter;        ///< --texture-filter
+    std::optional<TextureFootprint> textureFootprint;  ///< --texture-footprint
     bool spd = false;
     bool robust = false;
 };

@@ -32,6 +32,7 @@ std::string renderSettingsText(const RenderOptions& o) {
     add("adaptive", exact(o.adaptiveThreshold));
     add("adaptive_levels", std::to_string(o.adaptiveMaxLevel));
     add("seed", std::to_string(o.seed));
+    add("max_rays", std::to_string(o.maxRaysPerSample));
     add("accel", acceleratorName(o.accel));
     add("bvh_quality", bvhQualityName(o.accelOptions.quality));
     add("robust", o.accelOptions.robust ? "on" : "off");
@@ -47,10 +48,11 @@ std::string renderSettingsText(const RenderOptions& o) {
     add("spd", o.spd ? "on" : "off");
     add("shadows", shadowModeName(o.shadows));
     add("alpha", alphaModeName(o.alpha));
+    add("texture_filter", textureFilterName(o.textures.filter));
+    add("texture_footprint", textureFootprintName(o.textures.footprint));
     add("effects", o.forceAllEffects ? "all" : "auto");
     add("aovs", o.wantAovs ? "on" : "off");
     return s;
 }
-
 
 }  // namespace raylab

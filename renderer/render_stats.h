@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,12 +64,23 @@ struct RenderStats {
     std::string accel;
     int width = 0, height = 0, spp = 0, maxDepth = 0;
     uint64_t nonFiniteSamples = 0;  ///< samples whose radiance was NaN/Inf and was replaced
+    uint64_t maxRaysPerSample = 0;  ///< the cap (RenderOptions::maxRaysPerSample)
+    uint64_t cappedSamples = 0;     ///< samples that reached it (their trees were cut)
+    uint64_t maxSampleRays = 0;     ///< the most rays one sample traced
     /// Candidate hits cut out and transmitter crossings of shadow feelers
     /// (this process's accelerator: under mpirun, rank 0's share).
     FilterCounts filter;
     /// Scene objects by index (the EXR's objectId): the names their
     /// Cryptomatte ids are hashed from (exr_writer.h matteName).
     std::vector<std::string> objects;
+    /// Textured scenes only ("textures" effect): the lookup settings, the
+    /// number of textures and the MiB of their MIP pyramids.
+    struct Textures {
+        std::string filter, footprint;
+        uint64_t count = 0;
+        double mebibytes = 0;
+    };
+    std::optional<Textures> textures;
 
     /// Million rays (all types) per second of render time.
     double mraysPerSecond() const {

@@ -5,6 +5,9 @@
 // (template over EffectBits) and dispatched once per render.
 
 #include <limits>
+#include <memory>
+#include <type_traits>
+#include <utility>
 
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
@@ -12,6 +15,8 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/texture_shading.h"
+#include "renderer/shadow_cache.h"
 
 namespace raylab {
 
@@ -22,30 +27,67 @@ struct FirstHit {
     /// Planar camera depth: along the view axis (set by the renderer, which knows the camera).
     float depth = std::numeric_limits<float>::infinity();
     Vec3 normal;       ///< world shading normal (outward)
-    Color albedo;      ///< diffuse reflectance kd
+    Color albedo;      ///< diffuse reflectance kd (textured where kd has a texture)
     float objectId = -1;
+};
+
+/// What an untextured kernel carries instead of a footprint: nothing.
+struct NoFootprint {};
+
+/// What one camera sample spent: the rays it traced (every type) and whether
+/// the per-sample cap (RenderOptions::maxRaysPerSample) refused it a
+/// reflection or refraction ray.
+struct SampleRays {
+    uint64_t traced = 0;
+    bool capped = false;
 };
 
 class WhittedIntegrator {
 public:
     WhittedIntegrator(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                       const EffectSet& effects);
+    ~WhittedIntegrator();
 
-    /// Radiance along a camera ray. Counts rays into `counters`; fills
-    /// `first` (may be null) with the first hit's AOV data.
-    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const;
+    /// Radiance along a camera ray. Counts rays into `counters` and into
+    /// `spent` (this sample alone); fills `first` (may be null) with the first
+    /// hit's AOV data. After a stop request (renderer/cancel.h) no further
+    /// reflection or refraction ray is traced: the result is then partial.
+    /// `shadows` (may be null) is the calling thread's shadow cache: it
+    /// changes no answer, only how fast shadow rays are answered.
+    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
+             ShadowCache* shadows = nullptr) const;
 
 private:
+    /// What one worker carries through a ray tree.
+    struct TraceState {
+        RayCounters& counters;
+        ShadowCache* shadows;
+        SampleRays& spent;  ///< this sample's rays, for the per-sample cap
+    };
+
+    static constexpr bool textured(unsigned E) { return (E & kTextures) != 0; }
+    /// A ray's footprint in kernels with textures, nothing in the others.
+    template <unsigned E>
+    using Footprint = std::conditional_t<textured(E), RayFootprint, NoFootprint>;
+    template <unsigned E>
+    using HitFootprintOf = std::conditional_t<textured(E), HitFootprint, NoFootprint>;
+
+    template <unsigned E>
+    Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                RayCounters& counters, FirstHit* first) const;
+                TraceState& state, FirstHit* first, const Footprint<E>& footprint) const;
     template <unsigned E>
-    Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
+    Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     RayCounters& counters) const;
+                     TraceState& state) const;
+    /// Whether the sample may trace one more reflection or refraction ray.
+    bool mayBranch(SampleRays& spent) const;
 
-    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                RayCounters&, FirstHit*) const;
+    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, TraceState&, FirstHit*) const;
+    /// One kernel per effect combination: entry i is start<i>.
+    template <unsigned... E>
+    static constexpr auto kernelTable(std::integer_sequence<unsigned, E...>);
 
     const Scene& m_scene;
     const Accelerator& m_accel;
@@ -53,6 +95,7 @@ private:
     EffectSet m_effects;
     bool m_prune = true;  ///< skip zero-weight rays (off for the general kernel and SPD)
     Kernel m_kernel = nullptr;
+    std::unique_ptr<TextureShading> m_textures;  ///< only when the scene has textures
 };
 
 }  // namespace raylab

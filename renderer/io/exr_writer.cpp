@@ -21,6 +21,7 @@
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/half_convert.h"
 
 namespace raylab {
 
@@ -28,11 +29,10 @@ namespace {
 
 using Imath::half;
 
-constexpr float kHalfMax = 65504.0f;  // largest finite half
 constexpr float kFloatMax = std::numeric_limits<float>::max();
 
 /// NaN -> 0, |v| > maxAbs -> ±maxAbs (this also turns ±Inf into ±maxAbs).
-float finiteClamp(float v, float maxAbs) {
+float finiteClamp(float v, float maxAbs = kFloatMax) {
     if (std::isnan(v)) return 0.f;
     return v > maxAbs ? maxAbs : (v < -maxAbs ? -maxAbs : v);
 }
@@ -46,21 +46,32 @@ void checkLayerSize(const std::string& path, const char* name, size_t size, size
                              std::to_string(expected));
 }
 
-/// Copy of `src` (or `count` copies of `fallback` when src is empty), made
-/// safe for a FLOAT channel. With `isDepth`, NaN and ±inf become kNoHitDepth
-/// ("no hit", as Blender writes it); everything else is kept finite.
-std::vector<float> floatPlane(const std::vector<float>& src, size_t count, float fallback,
-                              bool isDepth) {
-    std::vector<float> out(count, fallback);
-    if (src.empty()) return out;
+/// Whether v must change to be stored in a FLOAT channel: NaN or an infinity.
+bool needsFloatFix(float v) { return !std::isfinite(v); }
+
+/// The values to write for a FLOAT layer: `src` itself when it is already safe
+/// (always, for a rendered film: this saves a copy of megabytes), else a safe
+/// copy in `storage` (with `isDepth` NaN and ±inf become kNoHitDepth, "no hit"
+/// as Blender writes it; otherwise NaN -> 0 and ±inf clamped to ±FLT_MAX), or
+/// `count` copies of `fallback` when src is empty.
+const float* floatPlane(const FilmPlane& src, size_t count, float fallback, bool isDepth,
+                        FilmPlane& storage) {
+    if (src.empty()) {
+        storage.assign(count, fallback);
+        return storage.data();
+    }
+    bool safe = true;
+    for (size_t i = 0; i < count && safe; ++i) safe = !needsFloatFix(src[i]);
+    if (safe) return src.data();
+    storage.resize(count);
     for (size_t i = 0; i < count; ++i) {
         const float v = src[i];
         if (isDepth && !std::isfinite(v))
-            out[i] = kNoHitDepth;
+            storage[i] = kNoHitDepth;
         else
-            out[i] = finiteClamp(v, kFloatMax);
+            storage[i] = finiteClamp(v);
     }
-    return out;
+    return storage.data();
 }
 
 Imath::M44f toM44f(const Matrix44& m) {
@@ -73,9 +84,8 @@ Imath::M44f toM44f(const Matrix44& m) {
 /// The Cryptomatte planes: per pixel kMatteRanks (id, coverage) pairs, the
 /// ids hashed from the object names. Objects that share a name share an id,
 /// so their coverages are merged; ranks stay sorted by decreasing coverage.
-std::vector<float> cryptomattePlane(const Film& film, size_t n,
-                                    const std::vector<std::string>& objectNames) {
-    std::vector<float> out(n * 2 * kMatteRanks, 0.f);
+FilmPlane cryptomattePlane(const Film& film, size_t n, const std::vector<std::string>& objectNames) {
+    FilmPlane out(n * 2 * kMatteRanks, 0.f);
     if (film.mattes.size() != n * kMatteRanks) return out;
     std::vector<float> idOf;  // object index -> id float, computed once per object
     const auto id = [&](int object) {
@@ -113,18 +123,31 @@ std::vector<float> cryptomattePlane(const Film& film, size_t n,
     return out;
 }
 
-std::vector<half> halfPlane(const std::vector<float>& src, size_t count) {
-    std::vector<half> out(count, half(0.f));
+using HalfPlane = std::vector<half, HugePageAllocator<half>>;
+
+HalfPlane halfPlane(const FilmPlane& src, size_t count) {
+    HalfPlane out(count, half(0.f));
     if (src.empty()) return out;
-    // Clamp first: Imath rounds to nearest, so anything above 65520 would become Inf.
-    for (size_t i = 0; i < count; ++i) out[i] = half(finiteClamp(src[i], kHalfMax));
+    static_assert(sizeof(half) == sizeof(uint16_t), "half is 16 bits");
+    floatsToHalf(src.data(), reinterpret_cast<uint16_t*>(out.data()), count);
     return out;
+}
+
+Imf::Compression toImf(ExrCompression c) {
+    switch (c) {
+        case ExrCompression::None: return Imf::NO_COMPRESSION;
+        case ExrCompression::Rle: return Imf::RLE_COMPRESSION;
+        case ExrCompression::Zips: return Imf::ZIPS_COMPRESSION;
+        case ExrCompression::Zip: return Imf::ZIP_COMPRESSION;
+        case ExrCompression::Piz: return Imf::PIZ_COMPRESSION;
+    }
+    return Imf::ZIP_COMPRESSION;
 }
 
 /// Slice wants a mutable char pointer even for output.
 template <class T>
-char* bytes(T* p) {
-    return reinterpret_cast<char*>(p);
+char* bytes(const T* p) {
+    return reinterpret_cast<char*>(const_cast<T*>(p));
 }
 
 }  // namespace
@@ -153,23 +176,22 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     checkLayerSize(path, "objectId", film.objectId.size(), n);
     checkLayerSize(path, "mattes", film.mattes.size(), n * kMatteRanks);
 
-    // Converted planes; interleaved layers keep the Film's layout and use strides.
+    // Planes to write; interleaved layers keep the Film's layout and use strides.
     const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
-    std::vector<float> rgbaF;
-    std::vector<half> rgbaH;
-    if (opts.floatPixels)
-        rgbaF = floatPlane(film.rgba, n * 4, 0.f, false);
-    else
-        rgbaH = halfPlane(film.rgba, n * 4);
-    std::vector<float> z = floatPlane(film.z, n, kNoHitDepth, true);
-    std::vector<float> distance = floatPlane(film.distance, n, kNoHitDepth, true);
-    std::vector<float> normal = floatPlane(film.normal, n * 3, 0.f, false);
-    std::vector<half> albedo = halfPlane(film.albedo, n * 3);
-    std::vector<float> objectId = floatPlane(film.objectId, n, -1.f, false);
-    std::vector<float> crypto = cryptomattePlane(film, n, opts.objectNames);
+    FilmPlane rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
+    const float* rgbaF =
+        opts.floatPixels ? floatPlane(film.rgba, n * 4, 0.f, false, rgbaCopy) : nullptr;
+    HalfPlane rgbaH;
+    if (!opts.floatPixels) rgbaH = halfPlane(film.rgba, n * 4);
+    const float* z = floatPlane(film.z, n, kNoHitDepth, true, zCopy);
+    const float* distance = floatPlane(film.distance, n, kNoHitDepth, true, distanceCopy);
+    const float* normal = floatPlane(film.normal, n * 3, 0.f, false, normalCopy);
+    HalfPlane albedo = halfPlane(film.albedo, n * 3);
+    const float* objectId = floatPlane(film.objectId, n, -1.f, false, objectIdCopy);
+    const FilmPlane crypto = cryptomattePlane(film, n, opts.objectNames);
 
     Imf::Header header(film.width, film.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = toImf(opts.compression);
     if (!opts.software.empty()) header.insert("software", Imf::StringAttribute(opts.software));
     if (opts.camera) {
         header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
@@ -203,29 +225,28 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     for (int c = 0; c < 4; ++c) {
         channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
         if (opts.floatPixels)
-            fb.insert(rgbaNames[c], Imf::Slice(Imf::FLOAT, bytes(rgbaF.data() + c),
+            fb.insert(rgbaNames[c], Imf::Slice(Imf::FLOAT, bytes(rgbaF + c),
                                                4 * sizeof(float), 4 * sizeof(float) * w));
         else
             fb.insert(rgbaNames[c], Imf::Slice(Imf::HALF, bytes(rgbaH.data() + c),
                                                4 * sizeof(half), 4 * sizeof(half) * w));
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
+    fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z), sizeof(float), sizeof(float) * w));
     channels.insert("distance", Imf::Channel(Imf::FLOAT));
-    fb.insert("distance",
-              Imf::Slice(Imf::FLOAT, bytes(distance.data()), sizeof(float), sizeof(float) * w));
+    fb.insert("distance", Imf::Slice(Imf::FLOAT, bytes(distance), sizeof(float), sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
         channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], Imf::Slice(Imf::FLOAT, bytes(normal.data() + c),
+        fb.insert(normalNames[c], Imf::Slice(Imf::FLOAT, bytes(normal + c),
                                              3 * sizeof(float), 3 * sizeof(float) * w));
         channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
         fb.insert(albedoNames[c], Imf::Slice(Imf::HALF, bytes(albedo.data() + c),
                                              3 * sizeof(half), 3 * sizeof(half) * w));
     }
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId.data()), sizeof(float),
+    fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId), sizeof(float),
                                      sizeof(float) * w));
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
     const size_t cryptoStride = 2 * kMatteRanks * sizeof(float);
@@ -241,7 +262,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         }
     }
 
-    // ZIP compression dominates the write; blocks are compressed in parallel
+    // Compression dominates the write; blocks are compressed in parallel
     // but always written in scan-line order, so the bytes stay deterministic.
     const int threads =
         opts.threads > 0 ? opts.threads : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -3,7 +3,8 @@
 // way compositors (Nuke, Blender, OpenImageIO) expect them; docs/output.md
 // explains each channel and attribute and how to open the file.
 //
-// Channels (scan-line image, ZIP compression, row 0 = top of the image):
+// Channels (scan-line image, row 0 = top of the image, lossless compression
+// chosen in ExrOptions):
 //   R G B A                   HALF (FLOAT with ExrOptions::floatPixels); A per
 //                             the alpha mode (raylab/alpha)
 //   Z                         FLOAT, planar camera depth of the first hit (along
@@ -34,8 +35,16 @@
 
 namespace raylab {
 
+/// Lossless compressions of OpenEXR that `raylab render --compression` offers
+/// (docs/benchmarks.md measures each: CPU time, bytes).
+enum class ExrCompression { None, Rle, Zips, Zip, Piz };
+
+/// --compression names, in the enum's order.
+inline constexpr const char* kExrCompressionNames[] = {"none", "rle", "zips", "zip", "piz"};
+
 struct ExrOptions {
     bool floatPixels = false;  ///< RGBA as 32-bit FLOAT instead of HALF
+    ExrCompression compression = ExrCompression::Zip;
     std::string software;      ///< "raylab 0.1.0" (omitted when empty)
     std::string settings;      ///< renderSettingsText of the render (omitted when empty)
     std::string alpha;         ///< alphaModeName of the render (omitted when empty)

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "renderer/io/mtl_textures.h"
+
 namespace raylab {
 
 namespace {
@@ -43,24 +45,37 @@ Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
         out.ks = Color(0);
     }
     if (illum >= 3 && illum <= 7) out.km = m.ks.given() ? m.ks.value : Color(0);
-    const bool transparent = illum == 4 || illum == 6 || illum == 7;
-    if (transparent) {
+    const double dissolve = m.dissolve.given() ? m.dissolve.value : 1.0;
+    // Only illum 6 and 7 ask for refraction ("Refraction on"); there the light
+    // that passes is Tf, or 1 - d, bent by Ni.
+    const bool refracting = illum == 6 || illum == 7;
+    if (refracting) {
         const bool tf = m.tf.given() && !m.tf.value.isBlack();
-        out.kt = tf ? m.tf.value : Color(1.0 - (m.dissolve.given() ? m.dissolve.value : 1.0));
+        out.kt = tf ? m.tf.value : Color(1.0 - dissolve);
     } else {
-        if (m.dissolve.given() && m.dissolve.value < 1)
-            warn.add("material '" + m.name + "': dissolve d < 1 is ignored with illum " +
-                         std::to_string(illum) + " (transparency needs illum 4, 6 or 7)",
-                     m.dissolve.line, m.file, "ignored dissolves");
+        // Dissolve, in every other model (the spec: "dissolve works on all
+        // illumination models" and "does not depend upon material thickness"):
+        // the surface is d opaque and 1 - d see-through, rays pass straight.
+        if (dissolve < 1) {
+            out.ka = out.ka * dissolve;
+            out.kd = out.kd * dissolve;
+            out.ks = out.ks * dissolve;
+            out.km = out.km * dissolve;
+            out.kt = Color(1.0 - dissolve);
+            out.ior = 1.0;
+        }
         if (m.tf.given())
-            note(m.tf.line, "'Tf' (transmission filter) is only used with illum 4, 6 or 7; ignored");
+            note(m.tf.line, "'Tf' (transmission filter) is only used with illum 6 or 7 (refraction); ignored");
     }
     if (m.ke.given() && !m.ke.value.isBlack())
         note(m.ke.line, "'Ke' (emission) is not simulated by raylab; ignored");
+    // Colour, exponent, bump and normal maps are read by mtl_textures.cpp.
     for (const MtlTexture& t : m.textures)
-        warn.add("material '" + m.name + "': texture maps are not supported and are ignored (" +
-                     t.keyword + " " + t.file + ")",
-                 t.line, m.file, "texture maps");
+        if (!isSupportedMtlMap(t.keyword))
+            warn.add("material '" + m.name + "': texture maps other than map_Kd, map_Ka, map_Ks, "
+                         "map_Ns, bump and norm are not supported and are ignored (" +
+                         t.keyword + " " + t.file + ")",
+                     t.line, m.file, "texture maps");
     return out;
 }
 

@@ -5,9 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "renderer/io/errors.h"
+#include "renderer/io/image_module_loader.h"
 #include "renderer/io/png_writer.h"
 
 namespace raylab {
@@ -45,10 +44,28 @@ void writeOiioImage(const std::string& path, const Film& film, OutputFormat form
                              std::to_string(film.rgba.size()) + " RGBA values, expected " +
                              std::to_string(n * 4));
 
+    // OpenImageIO is loaded here, for the first JPEG, HDR or TIFF of the run
+    // (image_module.h): EXR and PNG renders never map it.
+    const image_module::Api* oiio = nullptr;
+    try {
+        oiio = &imageModule();
+    } catch (const ImageModuleUnavailable& e) {
+        throw InputError(path, 0,
+                         std::string("cannot write ") + outputFormatName(format) + ": " + e.what());
+    }
+    if (!oiio->write)
+        throw InputError(path, 0, std::string("cannot write ") + outputFormatName(format) +
+                                      ": the OpenImageIO module has no writer");
+
     const bool eightBit = format == OutputFormat::Jpeg;
     const int channels = format == OutputFormat::Tiff ? 4 : 3;
-    OIIO::ImageSpec spec(film.width, film.height, channels,
-                         eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+    image_module::WriteRequest request;
+    request.format = plugin;
+    request.width = film.width;
+    request.height = film.height;
+    request.channels = channels;
+    request.uint8 = eightBit;
+    auto& attributes = request.attributes;
     std::vector<uint8_t> bytes;
     std::vector<float> floats;
     if (eightBit) {
@@ -58,8 +75,9 @@ void writeOiioImage(const std::string& path, const Film& film, OutputFormat form
             const auto rgb = toneMapSrgb8(c[0], c[1], c[2], exposure);
             std::copy(rgb.begin(), rgb.end(), bytes.begin() + std::ptrdiff_t(3 * i));
         }
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("Compression", "jpeg:95");
+        attributes.push_back({"oiio:ColorSpace", "sRGB"});
+        attributes.push_back({"Compression", "jpeg:95"});
+        request.pixels = bytes.data();
     } else {
         floats.resize(n * size_t(channels));
         for (size_t i = 0; i < n; ++i)
@@ -69,30 +87,22 @@ void writeOiioImage(const std::string& path, const Film& film, OutputFormat form
                 if (format == OutputFormat::Hdr) v = std::max(v, 0.f);
                 floats[i * size_t(channels) + size_t(c)] = v;
             }
-        spec.attribute("oiio:ColorSpace", "linear");
+        attributes.push_back({"oiio:ColorSpace", "linear"});
         if (format == OutputFormat::Tiff) {
-            spec.alpha_channel = 3;
-            spec.attribute("Compression", "zip");
+            request.alphaChannel = 3;
+            attributes.push_back({"Compression", "zip"});
         }
+        request.pixels = floats.data();
     }
-    if (!software.empty()) spec.attribute("Software", software);
+    if (!software.empty()) attributes.push_back({"Software", software});
     // OpenImageIO's TIFF writer stamps the current time unless DateTime is
     // set; an empty one is left out, so the same render writes the same bytes.
-    spec.attribute("DateTime", "");
+    attributes.push_back({"DateTime", ""});
 
     writeFileAtomically(path, [&](const std::string& tmp) {
-        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(plugin);
-        if (!out) throw InputError("OpenImageIO has no " + std::string(plugin) + " writer: " +
-                                   OIIO::geterror());
-        if (!out->open(tmp, spec)) throw InputError("OpenImageIO: " + out->geterror());
-        const bool ok = eightBit ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
-                                 : out->write_image(OIIO::TypeDesc::FLOAT, floats.data());
-        if (!ok) {
-            const std::string message = out->geterror();
-            out->close();
-            throw InputError("OpenImageIO: " + message);
-        }
-        if (!out->close()) throw InputError("OpenImageIO: " + out->geterror());
+        request.path = tmp;
+        std::string error;
+        if (!oiio->write(request, error)) throw InputError("OpenImageIO: " + error);
     }, group);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // The output formats written through OpenImageIO: JPEG (8-bit sRGB,
 // tone-mapped like the PNG), Radiance HDR (linear RGB) and TIFF (32-bit float
-// linear RGBA, the EXR's beauty pass).
+// linear RGBA, the EXR's beauty pass). raylab does not link OpenImageIO: the
+// first such write loads its module (image_module.h), so EXR and PNG renders
+// never pay for its libraries.
 
 #include <string>
 
@@ -19,8 +21,9 @@ namespace raylab {
 /// TIFF: linear RGBA as rendered (A as in the EXR), ZIP compressed.
 /// Values are finite (the film never holds NaN or Inf).
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent,
-///         the format is not one of these three, or the file cannot be
-///         written; `path` is then left untouched.
+///         the format is not one of these three, OpenImageIO's module is not
+///         available (not found, or over the `ulimit -v` budget), or the file
+///         cannot be written; `path` is then left untouched.
 /// With `group`, the file is staged in it and appears at group->commit().
 void writeOiioImage(const std::string& path, const Film& film, OutputFormat format,
                     double exposure, const std::string& software,

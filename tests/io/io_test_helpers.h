@@ -10,6 +10,7 @@
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/obj_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_option_names.h"
 #include "renderer/render_setup.h"
@@ -37,6 +38,13 @@ inline Failure failureOf(const std::function<void()>& fn) {
 
 inline bool contains(const std::string& haystack, const std::string& needle) {
     return haystack.find(needle) != std::string::npos;
+}
+
+/// OBJ loading options that keep warnings in the model instead of printing them.
+inline ObjLoadOptions quiet() {
+    ObjLoadOptions o;
+    o.printWarnings = false;
+    return o;
 }
 
 /// The triangle mesh behind a loaded object, or null for an analytic shape.

@@ -15,17 +15,12 @@
 #include "renderer/io/scene_loader.h"
 
 using namespace raylab;
+using raylab::test::quiet;
 using raylab::test::contains;
 using raylab::test::failureOf;
 using raylab::test::TempDir;
 
 namespace {
-
-ObjLoadOptions quiet() {
-    ObjLoadOptions o;
-    o.printWarnings = false;
-    return o;
-}
 
 /// A unit square at z = 0 facing +z, using material `name` from m.mtl.
 std::string squareObj(const std::string& usemtl) {
@@ -35,11 +30,12 @@ std::string squareObj(const std::string& usemtl) {
 /// The centre pixel of the square seen straight from above by an orthographic
 /// camera, lit straight from above (N·L = 1, and H = N: the highlight is ks·I)
 /// with intensity 1 and ambient 0.5.
-Color centrePixel(const TempDir& dir, const std::string& mtl) {
+Color centrePixel(const TempDir& dir, const std::string& mtl,
+                  const std::string& background = "[0, 0, 0]") {
     dir.write("m.mtl", mtl);
     dir.write("sq.obj", squareObj("plastic"));
     const std::string json =
-        "{\"camera\": {\"type\": \"orthographic\", \"eye\": [0.5, 0.5, 3], \"direction\": "
+        "{\"background\": " + background + ", \"camera\": {\"type\": \"orthographic\", \"eye\": [0.5, 0.5, 3], \"direction\": "
         "[0, 0, -1], \"width\": 2}, \"ambient\": 0.5, \"lights\": [{\"type\": "
         "\"directional\", \"direction\": [0, 0, -1]}], \"objects\": [{\"type\": \"mesh\", "
         "\"file\": \"sq.obj\"}]}";
@@ -148,10 +144,28 @@ TEST_CASE("mtl: statements raylab does not simulate are named once per file") {
         // exporters write) is no emission and not worth a word.
         mtl + ":11: Ns below 1 makes the highlight cover the whole surface; read as no "
               "highlight (ks = 0)",
-        mtl + ":10: 'Tf' (transmission filter) is only used with illum 4, 6 or 7; ignored",
+        mtl + ":10: 'Tf' (transmission filter) is only used with illum 6 or 7 (refraction); ignored",
         mtl + ":8: 'Ke' (emission) is not simulated by raylab; ignored (2 times)",
     };
     CHECK(m.warnings == expected);
+}
+
+TEST_CASE("mtl: d < 1 is dissolve: d of the surface plus 1 - d of what is behind, unbent") {
+    TempDir dir;
+    // The square of the first case (ka·0.5 + kd + ks = (1, 0.625, 0.4375)) at
+    // d = 0.5 over a blue background (0, 0, 1): the surface's half plus half
+    // the background, seen straight through: (0.5, 0.3125, 0.21875 + 0.5).
+    const std::string plastic = "newmtl plastic\nKd 0.5 0.25 0.125\nKs 0.25\nNs 8\n";
+    CHECK(centrePixel(dir, plastic + "d 0.5\n", "[0, 0, 1]") == Color(0.5, 0.3125, 0.71875));
+    // Tr is 1 - d; illum 4 ("glass on") dissolves too and ignores Ni; its
+    // ray-traced mirror km = d·Ks = 0.125 adds the blue background above.
+    CHECK(centrePixel(dir, plastic + "Tr 0.5\nillum 4\nNi 1.5\n", "[0, 0, 1]") ==
+          Color(0.5, 0.3125, 0.84375));
+    // Fully dissolved: only the background.
+    CHECK(centrePixel(dir, plastic + "d 0\n", "[0, 0, 1]") == Color(0, 0, 1));
+    // illum 7 refracts instead: kt = 1 - d with Ni; the surface keeps its
+    // terms (plus the mirror km = Ks, which sees the black sky above).
+    CHECK(centrePixel(dir, plastic + "d 0.5\nillum 7\nNi 1.5\n", "[0, 0, 1]").r == 1);
 }
 
 TEST_CASE("mtl: d, Tr and d -halo share one range, [0, 1]") {

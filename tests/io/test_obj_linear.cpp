@@ -11,18 +11,13 @@
 #include "renderer/io/obj_loader.h"
 
 using namespace raylab;
+using raylab::test::quiet;
 using raylab::test::contains;
 using raylab::test::TempDir;
 
 namespace {
 
 constexpr int kN = 100000;
-
-ObjLoadOptions quiet() {
-    ObjLoadOptions o;
-    o.printWarnings = false;
-    return o;
-}
 
 const char* const kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 

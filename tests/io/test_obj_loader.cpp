@@ -14,18 +14,13 @@
 #include "support/vec_checks.h"
 
 using namespace raylab;
+using raylab::test::quiet;
 using raylab::test::checkVec;
 using raylab::test::contains;
 using raylab::test::failureOf;
 using raylab::test::TempDir;
 
 namespace {
-
-ObjLoadOptions quiet() {
-    ObjLoadOptions o;
-    o.printWarnings = false;
-    return o;
-}
 
 
 bool anyWarning(const ObjModel& m, const std::string& needle) {
@@ -131,10 +126,11 @@ TEST_CASE("obj: one-value colours and 'd -halo' read as the MTL format defines t
         dir.write("m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
         quiet());
     REQUIRE(m.materials.size() == 1);
-    CHECK(m.materials[0].kd == Color(0.5, 0.5, 0.5));
-    CHECK(m.materials[0].ks == Color(0.25, 0.25, 0.25));
-    CHECK(m.materials[0].kt == Color(0.75, 0.75, 0.75));  // 1 - d
-    CHECK(m.materials[0].ka == Color(0.125, 0.125, 0.125));
+    // d = 0.25 (dissolve): the surface terms a quarter, kt = 1 - d.
+    CHECK(m.materials[0].kd == Color(0.125, 0.125, 0.125));
+    CHECK(m.materials[0].ks == Color(0.0625, 0.0625, 0.0625));
+    CHECK(m.materials[0].kt == Color(0.75, 0.75, 0.75));
+    CHECK(m.materials[0].ka == Color(0.03125, 0.03125, 0.03125));
 }
 
 TEST_CASE("obj: MTL illum models map to Whitted materials") {
@@ -167,20 +163,24 @@ TEST_CASE("obj: MTL illum models map to Whitted materials") {
     CHECK(M[1].ka == Color(0.25, 0.25, 0.25));
     CHECK(M[1].kd == Color(0.5, 0.25, 0.125));
     CHECK(M[1].ks.isBlack());
-    // illum 2: highlight, no mirror; its d 0.5 is ignored (warned), not transmission.
-    CHECK(M[2].ks == Color(0.75, 0.5, 0.25));
+    // illum 2 with d 0.5: dissolve, half the surface and half see-through,
+    // unbent (ior 1): kd 0.5 -> 0.25, ks (0.75, 0.5, 0.25) -> half of it.
+    CHECK(M[2].ks == Color(0.375, 0.25, 0.125));
+    CHECK(M[2].kd == Color(0.25, 0.25, 0.25));
     CHECK(M[2].shininess == 50);
     CHECK(M[2].km.isBlack());
-    CHECK(M[2].kt.isBlack());
+    CHECK(M[2].kt == Color(0.5, 0.5, 0.5));
+    CHECK(M[2].ior == 1.0);
     // illum 3 (and 5): mirror km = Ks.
     CHECK(M[3].km == Color(0.75, 0.5, 0.25));
     CHECK(M[3].kd == Color(0.125, 0.125, 0.125));
     CHECK(M[5].km == Color(0.25, 0.5, 0.75));
     CHECK(M[5].kt.isBlack());
-    // illum 4: kt = 1 - d = 0.75, ior = Ni; reflection is ray traced too (km = Ks).
+    // illum 4 ("glass on", no refraction): dissolve d = 0.25: kt = 0.75, Ni
+    // not used (ior 1), the ray-traced reflection km = Ks scaled by d.
     CHECK(M[4].kt == Color(0.75, 0.75, 0.75));
-    CHECK(M[4].ior == 1.25);
-    CHECK(M[4].km == Color(0.5, 0.5, 0.5));
+    CHECK(M[4].ior == 1.0);
+    CHECK(M[4].km == Color(0.125, 0.125, 0.125));
     // illum 6: Tf wins over d.
     CHECK(M[6].kt == Color(0.5, 0.625, 0.75));
     CHECK(M[6].ior == 1.5);
@@ -194,8 +194,8 @@ TEST_CASE("obj: MTL illum models map to Whitted materials") {
     REQUIRE(m.parts.size() == 1);
     const std::vector<uint32_t> expected = {7, 0, 1, 2, 3, 4, 5, 6};
     CHECK(m.parts[0].faceMaterials == expected);
-    CHECK(anyWarning(m, "shiny2': dissolve d < 1 is ignored with illum 2"));
-    CHECK(anyWarning(m, "shiny2': texture maps are not supported"));
+    // t.png does not exist: one warning, and the material is read untextured.
+    CHECK(anyWarning(m, "shiny2': map_Kd: texture not read ("));
 
     // In a scene the indices are offset past the scene's own materials.
     Scene scene;

@@ -15,18 +15,13 @@
 #include "support/vec_checks.h"
 
 using namespace raylab;
+using raylab::test::quiet;
 using raylab::test::checkVec;
 using raylab::test::TempDir;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-ObjLoadOptions quiet() {
-    ObjLoadOptions o;
-    o.printWarnings = false;
-    return o;
-}
 
 /// A cube-sphere: the six faces of a cube split into n x n quads (shared
 /// corners), every vertex pushed onto the unit sphere, quads wound outward.

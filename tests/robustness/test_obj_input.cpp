@@ -141,10 +141,10 @@ TEST_CASE("obj: texture-coordinate indices are checked like the others") {
 TEST_CASE("obj: MTL warnings are reported at the MTL's own line") {
     const std::string err = rendered(
         "mtllib m.mtl\nusemtl a\n" + kTriangle,
-        {{"m.mtl", "newmtl a\nKd 1 0 0\nd 0.5\nTr 0.5\nmap_Kd wood.png\n"}});
+        {{"m.mtl", "newmtl a\nKd 1 0 0\nd 0.5\nTr 0.5\nmap_Kd wood.png\nTf 1 1 1\n"}});
     CHECK(contains(err, "m.mtl:4: Both `d` and `Tr` parameters defined"));
-    CHECK(contains(err, "m.mtl:3: material 'a': dissolve d < 1 is ignored"));
-    CHECK(contains(err, "m.mtl:5: material 'a': texture maps are not supported"));
+    CHECK(contains(err, "m.mtl:6: 'Tf' (transmission filter) is only used with illum 6 or 7"));
+    CHECK(contains(err, "m.mtl:5: material 'a': map_Kd: texture not read ("));
 }
 
 TEST_CASE("obj: MTL statements tinyobjloader misreads are read as the MTL format means them") {

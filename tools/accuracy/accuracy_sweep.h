@@ -17,7 +17,9 @@
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/film.h"
+#include "renderer/texture_options.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_mode.h"
 
 namespace raylab {
 
@@ -26,7 +28,7 @@ namespace raylab {
 struct AccuracySetting {
     std::string name;  ///< row label, e.g. "spp 4"
     std::string knob;  ///< group: reference, default, spp, adaptive, depth, min-weight,
-                       ///< precision, offset, bvh, combo
+                       ///< precision, offset, bvh, shadows, combo
     int spp = 1;
     double adaptiveThreshold = 0;  ///< 0 = off (stratified spp)
     int adaptiveLevels = 2;
@@ -37,6 +39,8 @@ struct AccuracySetting {
     double epsilon = 1e-4;  ///< FixedEpsilon only
     AccelOptions::BvhQuality quality = AccelOptions::BvhQuality::Medium;
     bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST
+    ShadowMode shadows = ShadowMode::Filtered;  ///< feelers through transmitters (or blocked)
+    TextureOptions textures;  ///< texture filter and footprint (textured scenes)
 
     /// The equivalent `raylab render` flags ("--spp 4 --depth 5 ...", every knob).
     std::string flags() const;
@@ -47,12 +51,18 @@ struct AccuracySetting {
 AccuracySetting defaultAccuracySetting();
 
 /// \brief The reference: `spp` stratified jittered samples per pixel, depth
-///   12, double precision, robust Embree traversal, robust offset, no pruning.
+///   12, double precision, robust Embree traversal, robust offset, no pruning,
+///   point-sampled textures (the samples themselves do the filtering).
 AccuracySetting referenceAccuracySetting(int spp);
 
 /// \brief The settings swept: the default, each knob varied alone from the
 ///   default, and a few combinations. `quick` keeps a handful (smoke runs).
-std::vector<AccuracySetting> accuracySweepSettings(bool quick);
+///   `textured` adds the "texture" group: every texture filter and footprint.
+std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured = false);
+
+/// Whether some material of the scene has a texture (the sweep then has a
+/// "texture" group).
+bool hasTextures(const Scene& scene);
 
 /// The knob group names accuracySweepSettings uses, in table order.
 std::vector<std::string> accuracyKnobNames();
