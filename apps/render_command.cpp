@@ -397,6 +397,13 @@ int renderCommand(const std::vector<std::string>& args) {
         for (const OutputFlag& output : outputFlags(cli))
             if (!output.path.empty())
                 checkWritable(cli.frames ? sequenceFileName(output.path, frames.first) : output.path);
+        // JPEG, HDR and TIFF are written through OpenImageIO, loaded only
+        // for them: when it cannot be, say so now, not after the render.
+        for (const OutputFlag& image : cli.images) {
+            const OutputFormat format = *outputFormatOf(image.path);
+            if (format != OutputFormat::Exr && format != OutputFormat::Png)
+                prepareOiioImageWriter(image.path, format);
+        }
     }
     // Under mpirun every rank must render the same picture: rank 0 compares
     // what each one read and resolved. Every rank knows the verdict, so all of

@@ -24,7 +24,27 @@ const char* oiioFormat(OutputFormat format) {
     }
 }
 
+/// OpenImageIO's module, loaded now if it is not yet (image_module.h): EXR and
+/// PNG renders never map it.
+const image_module::Api& oiioWriter(const std::string& path, OutputFormat format) {
+    const image_module::Api* oiio = nullptr;
+    try {
+        oiio = &imageModule();
+    } catch (const ImageModuleUnavailable& e) {
+        throw InputError(path, 0,
+                         std::string("cannot write ") + outputFormatName(format) + ": " + e.what());
+    }
+    if (!oiio->write)
+        throw InputError(path, 0, std::string("cannot write ") + outputFormatName(format) +
+                                      ": the OpenImageIO module has no writer");
+    return *oiio;
+}
+
 }  // namespace
+
+void prepareOiioImageWriter(const std::string& path, OutputFormat format) {
+    (void)oiioWriter(path, format);
+}
 
 void writeOiioImage(const std::string& path, const Film& film, OutputFormat format,
                     double exposure, const std::string& software, AtomicFileGroup* group) {
@@ -44,18 +64,7 @@ void writeOiioImage(const std::string& path, const Film& film, OutputFormat form
                              std::to_string(film.rgba.size()) + " RGBA values, expected " +
                              std::to_string(n * 4));
 
-    // OpenImageIO is loaded here, for the first JPEG, HDR or TIFF of the run
-    // (image_module.h): EXR and PNG renders never map it.
-    const image_module::Api* oiio = nullptr;
-    try {
-        oiio = &imageModule();
-    } catch (const ImageModuleUnavailable& e) {
-        throw InputError(path, 0,
-                         std::string("cannot write ") + outputFormatName(format) + ": " + e.what());
-    }
-    if (!oiio->write)
-        throw InputError(path, 0, std::string("cannot write ") + outputFormatName(format) +
-                                      ": the OpenImageIO module has no writer");
+    const image_module::Api* oiio = &oiioWriter(path, format);
 
     const bool eightBit = format == OutputFormat::Jpeg;
     const int channels = format == OutputFormat::Tiff ? 4 : 3;

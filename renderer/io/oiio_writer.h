@@ -25,6 +25,12 @@ namespace raylab {
 ///         available (not found, or over the `ulimit -v` budget), or the file
 ///         cannot be written; `path` is then left untouched.
 /// With `group`, the file is staged in it and appears at group->commit().
+/// \brief Loads OpenImageIO's module for writing `path` as `format`, so that a
+/// render fails before it starts, not after, when the module is missing or
+/// does not fit the address-space limit.
+/// \throws InputError(path, 0, reason) when it is not available.
+void prepareOiioImageWriter(const std::string& path, OutputFormat format);
+
 void writeOiioImage(const std::string& path, const Film& film, OutputFormat format,
                     double exposure, const std::string& software,
                     AtomicFileGroup* group = nullptr);
