@@ -306,3 +306,60 @@ TEST_CASE("memory guard: a texture whose image library cannot be mapped is left 
     CHECK(textured > 0);
 #endif
 }
+
+TEST_CASE("memory guard: a JPEG, HDR or TIFF output OpenImageIO cannot be mapped for fails up front") {
+#if defined(__SANITIZE_ADDRESS__)
+    MESSAGE("skipped under AddressSanitizer");
+#else
+    // Those three formats are written through OpenImageIO's module, loaded
+    // only for them (renderer/io/oiio_writer.h); EXR and PNG never load it.
+    // Stepped up through the limits where raylab starts but OpenImageIO may
+    // not fit: an EXR + PNG render always succeeds; one that adds a JPEG
+    // either writes all three or stops before the render with one line
+    // naming the JPEG, and leaves no file.
+    TempDir dir;
+    const std::string scene = dir.write(
+        "scene.json", "{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+                      " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n");
+    int refused = 0, written = 0;
+    for (int mib = 300; mib <= 1200; mib += 100) {
+        CAPTURE(mib);
+        const double limit = mib * double(1 << 20);
+        const RunResult plain = runRaylab({"render", scene, "-o", dir.file("a.exr"), "-o",
+                                           dir.file("a.png"), "--width", "8", "--height", "8",
+                                           "--quiet"},
+                                          60, limit);
+        CAPTURE(plain.err);
+        CHECK_FALSE(plain.timedOut);
+        if (plain.exitCode == 127) continue;  // too small to load raylab's own libraries
+        CHECK(plain.exitCode == 0);
+        CHECK(plain.err.empty());
+        std::filesystem::remove(dir.file("a.exr"));
+        std::filesystem::remove(dir.file("a.png"));
+
+        const RunResult r = runRaylab({"render", scene, "-o", dir.file("a.exr"), "-o",
+                                       dir.file("a.png"), "-o", dir.file("a.jpg"), "--width", "8",
+                                       "--height", "8", "--quiet"},
+                                      60, limit);
+        CAPTURE(r.err);
+        CHECK_FALSE(r.timedOut);
+        if (r.exitCode == 0) {
+            CHECK(r.err.empty());
+            CHECK(std::filesystem::exists(dir.file("a.jpg")));
+            ++written;
+        } else {
+            CHECK(r.exitCode == 1);
+            CHECK(startsWith(r.err, "raylab: error: " + dir.file("a.jpg") +
+                                        ": cannot write JPEG: OpenImageIO is not available ("));
+            CHECK(lines(r.err).size() == 1);
+            CHECK_FALSE(std::filesystem::exists(dir.file("a.exr")));
+            CHECK_FALSE(std::filesystem::exists(dir.file("a.png")));
+            CHECK_FALSE(std::filesystem::exists(dir.file("a.jpg")));
+            ++refused;
+        }
+        for (const char* f : {"a.exr", "a.png", "a.jpg"}) std::filesystem::remove(dir.file(f));
+    }
+    CHECK(refused > 0);
+    CHECK(written > 0);
+#endif
+}

@@ -2,8 +2,13 @@
 // without image textures never loads it; the first image texture does.
 #include <doctest/doctest.h>
 
+#include <filesystem>
+
 #include "image_files.h"
+#include "renderer/io/exr_writer.h"
 #include "renderer/io/image_module_loader.h"
+#include "renderer/io/oiio_writer.h"
+#include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
 #include "support/temp_dir.h"
 
@@ -60,4 +65,53 @@ TEST_CASE("image module: writes and reads back through the same entry points") {
     for (int i = 0; i < 6; ++i) CHECK(back[i] == pixels[i]);  // EXR half holds these exactly
     CHECK_FALSE(api.open(dir.file("missing.png"), error));
     CHECK_FALSE(error.empty());
+}
+
+TEST_CASE("image module: EXR and PNG outputs never load it; the first JPEG, HDR or TIFF does") {
+    if (imageModuleLoaded()) {
+        MESSAGE("module loaded by an earlier case of this process; run alone to check");
+        return;
+    }
+    test::TempDir dir;
+    Film film(3, 2);
+    for (size_t i = 0; i < film.rgba.size(); ++i) film.rgba[i] = float(i % 4) * 0.25f;
+    writeExr(dir.file("a.exr"), film, ExrOptions{});
+    writePng(dir.file("a.png"), film);
+    CHECK_FALSE(imageModuleLoaded());
+    writeOiioImage(dir.file("a.hdr"), film, OutputFormat::Hdr, 0, "raylab test");
+    CHECK(imageModuleLoaded());
+    // Read back through the module: 3 linear channels, the film's RGB.
+    std::string error;
+    const auto file = imageModule().open(dir.file("a.hdr"), error);
+    REQUIRE_MESSAGE(file, error);
+    CHECK(file->header().width == 3);
+    CHECK(file->header().height == 2);
+    CHECK(file->header().channels == 3);
+    std::vector<float> back(18);
+    REQUIRE(file->readFloat(3, back.data(), error));
+    // 0, 0.25, 0.5 per pixel: exact in RGBE (shared exponent of 0.5).
+    for (size_t i = 0; i < 6; ++i)
+        for (size_t c = 0; c < 3; ++c) CHECK(back[3 * i + c] == film.rgba[4 * i + c]);
+}
+
+TEST_CASE("image module: a write it cannot do comes back as text, never thrown") {
+    const image_module::Api& api = imageModule();
+    REQUIRE((api.write != nullptr));
+    test::TempDir dir;
+    const float pixels[3] = {1, 2, 3};
+    image_module::WriteRequest r;
+    r.path = dir.file("x");
+    r.format = "no-such-format";
+    r.width = r.height = 1;
+    r.channels = 3;
+    r.pixels = pixels;
+    std::string error;
+    CHECK_FALSE(api.write(r, error));
+    CHECK_FALSE(error.empty());
+    r.format = "tiff";
+    r.path = dir.file("missing-folder/x.tif");
+    error.clear();
+    CHECK_FALSE(api.write(r, error));
+    CHECK_FALSE(error.empty());
+    CHECK_FALSE(std::filesystem::exists(r.path));
 }
