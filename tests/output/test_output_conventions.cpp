@@ -228,7 +228,7 @@ TEST_CASE("output: EXR channels, attributes and camera matrices") {
     }
 }
 
-TEST_CASE("output: Cryptomatte rank 0 decodes to the object at the pixel; coverage sums to 1") {
+TEST_CASE("output: Cryptomatte rank 0 decodes to the object at the pixel, coverage sums to 1") {
     TempDir dir;
     writeText(dir.file("balls.json"), kThreeBalls);
     const std::string exr = dir.file("c.exr");

@@ -67,7 +67,7 @@ TEST_CASE("image module: writes and reads back through the same entry points") {
     CHECK_FALSE(error.empty());
 }
 
-TEST_CASE("image module: EXR and PNG outputs never load it; the first JPEG, HDR or TIFF does") {
+TEST_CASE("image module: EXR and PNG outputs never load it, the first JPEG, HDR or TIFF does") {
     if (imageModuleLoaded()) {
         MESSAGE("module loaded by an earlier case of this process; run alone to check");
         return;
