@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -27,6 +29,7 @@
 #include "distributed/rank_agreement.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/cancel.h"
+#include "renderer/crop_window.h"
 #include "renderer/effects.h"
 #include "renderer/first_look.h"
 #include "renderer/io/atomic_file.h"
@@ -68,7 +71,8 @@ const char* const kRenderHelp =
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
     "                           (and PNG/stats files numbered alike)\n"
-    "  --quiet                  no progress bar and no summary\n"
+    "  -q, --quiet              no progress bar and no summary (the bar is drawn only when\n"
+    "                           stderr is a terminal)\n"
     "\n"
     "image:\n"
     "  --width W, --height H    resolution in pixels (1..65536)\n"
@@ -83,6 +87,13 @@ const char* const kRenderHelp =
     "  --min-weight W           prune rays whose accumulated weight is below W (default 0 = off)\n"
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
+    "  --crop X0,X1,Y0,Y1       render only the window [X0,X1) x [Y0,Y1) of the image, in NDC\n"
+    "                           (0..1 of the width and height, y from the top; pbrt's\n"
+    "                           --cropwindow): pixels ceil(X0*W) .. ceil(X1*W)-1, likewise in y.\n"
+    "                           The EXR keeps the full image as its display window and the crop\n"
+    "                           as its data window; the PNG is the crop. Each pixel is bit-identical\n"
+    "                           to the same pixel of the full render (--spp, --adaptive and --spd\n"
+    "                           included)\n"
     "\n"
     "camera (any scene type; each flag replaces the scene's value, the others are kept):\n"
     "  --eye X,Y,Z              eye position\n"
@@ -110,6 +121,9 @@ const char* const kRenderHelp =
     "  --polygons watertight|projected|triangles   planar polygons: the watertight ray-space\n"
     "                           inside test (default), the lecture's projected 2D test, or ear-\n"
     "                           clipped into Embree triangles (two-sided)\n"
+    "  --effects auto|all       auto (default): the kernel specialised to the effects the scene\n"
+    "                           uses; all: the general kernel, every ray type at every hit with\n"
+    "                           pruning off (the same picture, slower: docs/effects.md)\n"
     "\n"
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
@@ -117,8 +131,24 @@ const char* const kRenderHelp =
     "                           --threads defaults to the cores of a machine / its ranks; every\n"
     "                           rank must read the same scene bytes and image flags (checked)\n"
     "\n"
+    "Flags take their value as '--flag value' or '--flag=value'.\n"
     "SIGINT, SIGTERM and SIGHUP stop the render in any phase: temporaries are removed, earlier\n"
     "outputs are left as they were, exit code 128+signal (130, 143, 129).\n";
+
+const CommandFlags kRenderFlags{
+    "render",
+    kRenderHelp,
+    {{"--output", "-o", true},      {"--png", "", true},         {"--exposure", "", true},
+     {"--float", "", false},        {"--stats", "", true},       {"--frames", "", true},
+     {"--quiet", "-q", false},      {"--width", "", true},       {"--height", "", true},
+     {"--spp", "", true},           {"--depth", "", true},       {"--seed", "", true},
+     {"--adaptive", "", true},      {"--adaptive-levels", "", true}, {"--min-weight", "", true},
+     {"--spd", "", false},          {"--crop", "", true},        {"--eye", "", true},
+     {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
+     {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
+     {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
+     {"--precision", "", true},     {"--shadows", "", true},     {"--epsilon", "", true},
+     {"--polygons", "", true},      {"--effects", "", true}}};
 
 namespace {
 
@@ -132,9 +162,30 @@ struct RenderCli {
     CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
     std::optional<Vec3> upAxis;  ///< --up (bare .obj)
     std::optional<ObjNormals> normals;  ///< --normals (bare .obj)
+    std::optional<CropWindow> crop;     ///< --crop, in NDC
 };
 
 Vec3 toVec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+/// --crop X0,X1,Y0,Y1: four numbers in [0, 1], X0 < X1 and Y0 < Y1 (pbrt's order).
+CropWindow parseCropWindow(const std::string& flag, const std::string& v) {
+    const std::string expected = flag + ": expected X0,X1,Y0,Y1 in [0, 1] with X0 < X1 and Y0 < Y1 (got '" + v + "')";
+    double c[4];
+    size_t start = 0;
+    for (int i = 0; i < 4; ++i) {
+        const size_t comma = v.find(',', start);
+        if ((i < 3) != (comma != std::string::npos)) throw UsageError(expected);
+        const std::string part = v.substr(start, i < 3 ? comma - start : std::string::npos);
+        char* end = nullptr;
+        c[i] = std::strtod(part.c_str(), &end);
+        if (part.empty() || std::isspace(static_cast<unsigned char>(part[0])) || *end != '\0' ||
+            !(c[i] >= 0 && c[i] <= 1))
+            throw UsageError(expected);
+        start = comma + 1;
+    }
+    if (!(c[0] < c[1] && c[2] < c[3])) throw UsageError(expected);
+    return {c[0], c[1], c[2], c[3]};
+}
 
 /// Whether `path` ends in `ext` (".exr"), in any letter case.
 bool hasExtension(const std::string& path, const std::string& ext) {
@@ -165,9 +216,10 @@ std::string imageCommand(const std::vector<std::string>& args) {
     std::string command = "raylab render";
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if (a == "-o" || a == "--output" || a == "--png" || a == "--stats" || a == "--threads" ||
-            a == "--exposure") {
-            ++i;  // and its value
+        const std::string name = a.substr(0, a.find('='));  // "--threads=4" as "--threads 4"
+        if (name == "-o" || name == "--output" || name == "--png" || name == "--stats" ||
+            name == "--threads" || name == "--exposure") {
+            if (name == a) ++i;  // and its value
             continue;
         }
         if (a == "--quiet" || a == "-q") continue;
@@ -194,14 +246,11 @@ Scene loadSceneNamingFile(const std::string& path, const SceneLoadOptions& optio
 
 RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     RenderCli cli;
-    ArgParser p(args);
+    ArgParser p(args, kRenderFlags);
     RenderOverrides& o = cli.overrides;
     while (!p.done()) {
         const std::string a = p.next();
-        if (a == "-h" || a == "--help") {
-            std::fputs(kRenderHelp, stdout);
-            std::exit(0);
-        } else if (a == "-o" || a == "--output") cli.exr = p.value(a);
+        if (a == "-o" || a == "--output") cli.exr = p.value(a);
         else if (a == "--png") cli.png = p.value(a);
         else if (a == "--stats") cli.stats = p.value(a);
         else if (a == "--frames") cli.frames = parseFrameRange(p.value(a));
@@ -245,8 +294,9 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--up")
             cli.upAxis = upAxisNamed(p.choice(a, {"x", "y", "z", "-x", "-y", "-z"}));
-        else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());  // hidden: the general kernel
-        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());
+        else if (a == "--crop") cli.crop = parseCropWindow(a, p.value(a));
+        else if (!a.empty() && a[0] == '-') throw std::logic_error("render: flag '" + a + "' declared but not handled");
         else if (cli.scene.empty()) cli.scene = a;
         else throw UsageError("unexpected argument '" + a + "' (one scene per render)");
     }
@@ -334,7 +384,15 @@ int renderCommand(const std::vector<std::string>& args) {
     RenderStats stats;
     stats.parseSeconds = secondsSince(t0);
 
-    const RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    if (cli.crop) {
+        options.crop = *cli.crop;
+        const PixelWindow w = cropPixels(options.crop, options.width, options.height);
+        if (w.empty())
+            throw UsageError("--crop: the window holds no pixel of the " +
+                             std::to_string(options.width) + "x" + std::to_string(options.height) +
+                             " image (pixels ceil(X0*W)..ceil(X1*W)-1 and likewise in y)");
+    }
     // Checked after the scene's own "render" block is merged: it may be the
     // one that turns adaptive sampling on.
     if (cli.overrides.spp && *cli.overrides.spp > 1 && (options.spd || options.adaptiveThreshold > 0))

@@ -56,10 +56,9 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
     SpanWriter w(out.data() + at);
     w.put(int32_t(item));
     if (m_spd) {
-        const size_t cw = size_t(from.film.width) + 1;
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
-                const Sample& s = from.corners[size_t(y) * cw + size_t(x)];
+                const Sample& s = from.corner(x, y);
                 w.put(s.c.r);
                 w.put(s.c.g);
                 w.put(s.c.b);
@@ -102,10 +101,9 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
         if (in.left() < payloadBytes(item)) throw std::runtime_error("message is truncated");
         const WorkRegion r = m_frame.region(item);
         if (m_spd) {
-            const size_t cw = size_t(to.film.width) + 1;
             for (int y = r.y0; y < r.y1; ++y) {
                 for (int x = r.x0; x < r.x1; ++x) {
-                    Sample& s = to.corners[size_t(y) * cw + size_t(x)];
+                    Sample& s = to.corner(x, y);
                     s.c.r = in.get<double>();
                     s.c.g = in.get<double>();
                     s.c.b = in.get<double>();

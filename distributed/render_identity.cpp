@@ -49,6 +49,8 @@ std::string optionWords(const RenderOptions& o) {
     add("shadows", shadowModeName(o.shadows));
     add("effects", o.forceAllEffects ? "all" : "auto");
     add("aovs", o.wantAovs ? "on" : "off");
+    add("crop", exact(o.crop.x0) + "," + exact(o.crop.x1) + "," + exact(o.crop.y0) + "," +
+                    exact(o.crop.y1));
     return s;
 }
 

@@ -11,6 +11,8 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -143,7 +145,8 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
                  const RenderOptions& opt, Film& film, int x, int y, WorkCounters& tc) {
     const size_t i = film.index(x, y);
     const int n = std::max(1, opt.spp);
-    Pcg32 rng(pixelSeed(opt.seed, i), 0);
+    // Seeded by the pixel's index in the full image, so a crop renders it alike.
+    Pcg32 rng(pixelSeed(opt.seed, size_t(y) * size_t(opt.width) + size_t(x)), 0);
     // n-rooks permutation for non-square sample counts (Fisher-Yates).
     std::vector<int> perm;
     const int gridSide = squareGridSide(n);
@@ -171,26 +174,47 @@ FrameRenderer::FrameRenderer(const Scene& scene, const Accelerator& accel,
                              const RenderOptions& options, const EffectSet& effects)
     : m_scene(scene), m_options(options),
       m_integrator(std::make_unique<WhittedIntegrator>(scene, accel, options, effects)),
-      m_tilesX((options.width + kTileSize - 1) / kTileSize),
-      m_tilesY((options.height + kTileSize - 1) / kTileSize) {}
+      m_window(cropPixels(options.crop, options.width, options.height)),
+      m_tileX0(m_window.x0 / kTileSize), m_tileY0(m_window.y0 / kTileSize),
+      m_tilesX(m_window.empty() ? 0 : (m_window.x1 - 1) / kTileSize - m_tileX0 + 1),
+      m_tilesY(m_window.empty() ? 0 : (m_window.y1 - 1) / kTileSize - m_tileY0 + 1) {
+    if (m_window.empty())
+        throw std::invalid_argument("crop window holds no pixel of a " +
+                                    std::to_string(options.width) + "x" +
+                                    std::to_string(options.height) + " image");
+}
 
 FrameRenderer::~FrameRenderer() = default;
 
 int FrameRenderer::workItemCount() const {
-    return m_options.spd ? m_options.height + 1 : m_tilesX * m_tilesY;
+    return m_options.spd ? m_window.height() + 1 : m_tilesX * m_tilesY;
 }
 
 FrameBuffers FrameRenderer::makeBuffers() const {
     FrameBuffers b;
-    b.film = Film(m_options.width, m_options.height);
-    if (m_options.spd) b.corners.resize(size_t(m_options.width + 1) * (m_options.height + 1));
+    b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
+                  m_options.height);
+    if (m_options.spd) {
+        b.cornerX0 = m_window.x0;
+        b.cornerY0 = m_window.y0;
+        b.cornerStride = m_window.width() + 1;
+        b.corners.resize(size_t(m_window.width() + 1) * size_t(m_window.height() + 1));
+    }
     return b;
 }
 
-WorkRegion FrameRenderer::region(int item) const {
-    if (m_options.spd) return {0, item, m_options.width + 1, item + 1};
-    const int x0 = (item % m_tilesX) * kTileSize, y0 = (item / m_tilesX) * kTileSize;
+WorkRegion FrameRenderer::tile(int item) const {
+    const int x0 = (m_tileX0 + item % m_tilesX) * kTileSize;
+    const int y0 = (m_tileY0 + item / m_tilesX) * kTileSize;
     return {x0, y0, std::min(x0 + kTileSize, m_options.width), std::min(y0 + kTileSize, m_options.height)};
+}
+
+WorkRegion FrameRenderer::region(int item) const {
+    if (m_options.spd)
+        return {m_window.x0, m_window.y0 + item, m_window.x1 + 1, m_window.y0 + item + 1};
+    const WorkRegion t = tile(item);
+    return {std::max(t.x0, m_window.x0), std::max(t.y0, m_window.y0), std::min(t.x1, m_window.x1),
+            std::min(t.y1, m_window.y1)};
 }
 
 void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const {
@@ -198,19 +222,19 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
     if (m_options.spd) {
         // SPD procedure: one eye ray through every pixel corner, (W+1)·(H+1)
         // rays; a work item is one row of corners.
-        const int cw = m_options.width + 1;
         for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i)
-            buffers.corners[size_t(r.y0) * cw + i] =
-                traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+            buffers.corner(i, r.y0) = traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
         return;
     }
     if (m_options.adaptiveThreshold > 0) {
-        AdaptiveTile tile(*m_integrator, m_scene, m_options, r, counters);
+        // The corner grid is the whole tile's, as in the full frame, even
+        // where the crop window cuts the tile.
+        AdaptiveTile adaptive(*m_integrator, m_scene, m_options, tile(item), counters);
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1 && !cancelRequested(); ++x) {
                 double coverage = 0;
                 FirstHit first;
-                const Color c = tile.pixel(x, y, coverage, first);
+                const Color c = adaptive.pixel(x, y, coverage, first);
                 const size_t i = buffers.film.index(x, y);
                 if (first.hit && m_options.wantAovs) storeFirstHit(buffers.film, i, first);
                 storePixel(buffers.film, i, c, coverage);
@@ -226,14 +250,13 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
 void FrameRenderer::finish(FrameBuffers& buffers) const {
     if (!m_options.spd) return;
     // Each pixel is the mean of its four corners.
-    const int cw = m_options.width + 1;
     Film& film = buffers.film;
-    for (int y = 0; y < m_options.height; ++y) {
-        for (int x = 0; x < m_options.width; ++x) {
-            const Sample& a = buffers.corners[size_t(y) * cw + x];
-            const Sample& b = buffers.corners[size_t(y) * cw + x + 1];
-            const Sample& c = buffers.corners[size_t(y + 1) * cw + x];
-            const Sample& d = buffers.corners[size_t(y + 1) * cw + x + 1];
+    for (int y = m_window.y0; y < m_window.y1; ++y) {
+        for (int x = m_window.x0; x < m_window.x1; ++x) {
+            const Sample& a = buffers.corner(x, y);
+            const Sample& b = buffers.corner(x + 1, y);
+            const Sample& c = buffers.corner(x, y + 1);
+            const Sample& d = buffers.corner(x + 1, y + 1);
             const size_t i = film.index(x, y);
             if (a.first.hit && m_options.wantAovs) storeFirstHit(film, i, a.first);
             storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25,

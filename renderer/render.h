@@ -33,10 +33,20 @@ struct WorkCounters {
 };
 
 /// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
-/// of the SPD procedure.
+/// of the SPD procedure (of the crop window's pixels in a crop render).
 struct FrameBuffers {
     Film film;
     std::vector<Sample> corners;
+    int cornerX0 = 0, cornerY0 = 0;  ///< full-image corner at corners[0]
+    int cornerStride = 0;            ///< corners per row
+
+    /// Corner (x, y) of the full image's corner grid.
+    Sample& corner(int x, int y) {
+        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
+    }
+    const Sample& corner(int x, int y) const {
+        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
+    }
 };
 
 /// The rectangle a work item writes: pixels [x0,x1)×[y0,y1) of the film, or
@@ -46,7 +56,9 @@ struct WorkRegion {
 };
 
 /// One frame cut into independent work items: 16×16 pixel tiles, or rows of
-/// pixel corners in SPD mode. Items can run in any order, on any thread or
+/// pixel corners in SPD mode. A crop render (options.crop) has the tiles of
+/// the full frame that meet the window, cut to it: coordinates stay those of
+/// the full image, so each pixel is computed exactly as in the full frame. Items can run in any order, on any thread or
 /// process; each writes only its own region, so the frame is deterministic.
 /// render() drives it with TBB; the distributed renderer hands items to ranks.
 class FrameRenderer {
@@ -64,10 +76,15 @@ public:
     void finish(FrameBuffers& buffers) const;
 
 private:
+    /// Tile `item` of the full frame's grid, cut to the image but not to the window.
+    WorkRegion tile(int item) const;
+
     const Scene& m_scene;
     RenderOptions m_options;
     std::unique_ptr<WhittedIntegrator> m_integrator;
-    int m_tilesX, m_tilesY;
+    PixelWindow m_window;      ///< the pixels rendered (the whole image without --crop)
+    int m_tileX0, m_tileY0;    ///< first tile of the full grid that meets the window
+    int m_tilesX, m_tilesY;    ///< tiles that meet it
 };
 
 struct RenderResult {

@@ -75,6 +75,19 @@ char* bytes(T* p) {
     return reinterpret_cast<char*>(p);
 }
 
+/// The film's pixels in full-image coordinates.
+Imath::Box2i exrDataWindow(const Film& film) {
+    return Imath::Box2i({film.originX, film.originY},
+                        {film.originX + film.width - 1, film.originY + film.height - 1});
+}
+
+/// A slice whose first element is the data window's top-left pixel
+/// (OpenEXR addresses slices from pixel (0, 0) of the display window).
+Imf::Slice sliceIn(const Imath::Box2i& dataWindow, Imf::PixelType type, char* first, size_t xStride,
+                   size_t yStride) {
+    return Imf::Slice::Make(type, first, dataWindow, xStride, yStride);
+}
+
 }  // namespace
 
 void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
@@ -107,7 +120,10 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     std::vector<half> albedo = halfPlane(film.albedo, n * 3);
     std::vector<float> objectId = floatPlane(film.objectId, n, -1.f, false);
 
-    Imf::Header header(film.width, film.height);
+    // A crop render is the data window inside the full image's display window.
+    const Imath::Box2i dataWindow = exrDataWindow(film);
+    Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
+                       dataWindow);
     header.compression() = Imf::ZIP_COMPRESSION;
     header.insert("raylab/command", Imf::StringAttribute(opts.commandLine));
     header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
@@ -123,26 +139,26 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     for (int c = 0; c < 4; ++c) {
         channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
         if (opts.floatPixels)
-            fb.insert(rgbaNames[c], Imf::Slice(Imf::FLOAT, bytes(rgbaF.data() + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(rgbaF.data() + c),
                                                4 * sizeof(float), 4 * sizeof(float) * w));
         else
-            fb.insert(rgbaNames[c], Imf::Slice(Imf::HALF, bytes(rgbaH.data() + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF, bytes(rgbaH.data() + c),
                                                4 * sizeof(half), 4 * sizeof(half) * w));
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
+    fb.insert("Z", sliceIn(dataWindow, Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
         channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], Imf::Slice(Imf::FLOAT, bytes(normal.data() + c),
+        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(normal.data() + c),
                                              3 * sizeof(float), 3 * sizeof(float) * w));
         channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
-        fb.insert(albedoNames[c], Imf::Slice(Imf::HALF, bytes(albedo.data() + c),
+        fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(albedo.data() + c),
                                              3 * sizeof(half), 3 * sizeof(half) * w));
     }
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId.data()), sizeof(float),
+    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId.data()), sizeof(float),
                                      sizeof(float) * w));
 
     // ZIP compression dominates the write; blocks are compressed in parallel
@@ -157,7 +173,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         // scope, before writeFileAtomically renames the file.
         Imf::OutputFile file(tmp.c_str(), header, threads);
         file.setFrameBuffer(fb);
-        file.writePixels(film.height);
+        file.writePixels(film.height);  // every scan line of the data window
     }, group);
 }
 
