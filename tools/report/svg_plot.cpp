@@ -310,7 +310,7 @@ std::string renderSvgPlot(const PlotSpec& spec) {
             double px0 = 0, py0 = 0;
             for (const PlotPoint& p : s.points) {
                 if (!plottable(p.x, spec.x.log) || !plottable(p.y, spec.y.log)) {
-                    havePrevious = false;  // break the line at a point that cannot be shown
+                    havePrevious = pen = false;  // break the line at a point that cannot be shown
                     continue;
                 }
                 const double px1 = xMap.toPixel(p.x), py1 = yMap.toPixel(p.y);
