@@ -223,7 +223,8 @@ std::string imageCommand(const std::vector<std::string>& args) {
             continue;
         }
         if (a == "--quiet" || a == "-q") continue;
-        command += " " + a;
+        // "--width=16" is recorded as "--width 16": the same image, the same bytes.
+        command += " " + (a.rfind("--", 0) == 0 && name != a ? name + " " + a.substr(name.size() + 1) : a);
     }
     return command;
 }
