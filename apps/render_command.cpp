@@ -339,9 +339,15 @@ SceneLoadOptions sceneLoadOptions(const RenderCli& cli) {
     return o;
 }
 
-void printSummary(const RenderStats& s, const std::string& exr, const std::string& png) {
-    std::printf("raylab: %dx%d, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
-                s.height, s.spp, s.maxDepth, s.accel.c_str(), s.threads,
+void printSummary(const RenderStats& s, const Film& film, const std::string& exr,
+                  const std::string& png) {
+    const std::string crop = film.isCrop() ? " (crop " + std::to_string(film.width) + "x" +
+                                                 std::to_string(film.height) + " at " +
+                                                 std::to_string(film.originX) + "," +
+                                                 std::to_string(film.originY) + ")"
+                                           : "";
+    std::printf("raylab: %dx%d%s, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
+                s.height, crop.c_str(), s.spp, s.maxDepth, s.accel.c_str(), s.threads,
                 (unsigned long long)s.primitives);
     std::string effects;
     for (const std::string& e : s.effects) effects += (effects.empty() ? "" : ", ") + e;
@@ -505,7 +511,7 @@ int renderCommand(const std::vector<std::string>& args) {
                                 " and later not");
 
         if (!cli.quiet) {
-            printSummary(stats, output(cli.exr), output(cli.png));
+            printSummary(stats, result.film, output(cli.exr), output(cli.png));
             std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
         }
     }

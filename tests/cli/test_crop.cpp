@@ -119,7 +119,9 @@ TEST_CASE("crop: adjacent windows tile the frame; the whole window is the full r
                 .exitCode == 0);
     CHECK(cli::readFile(dir.file("full.exr")) == cli::readFile(dir.file("whole.exr")));
     // Left and right halves at 0.5: pixels 0..18 and 19..36 (ceil(18.5) = 19).
-    REQUIRE(cli::run("render " + scene + " -o " + dir.file("l.exr") + " -q --float --crop=0,0.5,0,1").exitCode == 0);
+    const cli::Result left = cli::run("render " + scene + " -o " + dir.file("l.exr") + " --float --crop=0,0.5,0,1");
+    REQUIRE(left.exitCode == 0);
+    CHECK(left.out.rfind("raylab: 37x23 (crop 19x23 at 0,0), ", 0) == 0);
     REQUIRE(cli::run("render " + scene + " -o " + dir.file("r.exr") + " -q --float --crop=0.5,1,0,1").exitCode == 0);
     const Film full = raylab::readExr(dir.file("full.exr"));
     const Film l = raylab::readExr(dir.file("l.exr")), r = raylab::readExr(dir.file("r.exr"));
