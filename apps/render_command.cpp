@@ -68,7 +68,10 @@ const char* const kRenderHelp =
     "  --png FILE.png           also write a tone-mapped sRGB PNG preview\n"
     "  --exposure E             PNG exposure in stops (default 0)\n"
     "  --float                  32-bit float RGBA in the EXR (default: half)\n"
-    "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects)\n"
+    "  --compression none|rle|zips|zip|piz   lossless EXR compression (default zip; none and rle\n"
+    "                           write fastest, zip and piz smallest: docs/benchmarks.md)\n"
+    "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects,\n"
+    "                           samples that reached the ray cap)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
     "                           (and PNG/stats files numbered alike)\n"
     "  -q, --quiet              no progress bar and no summary (the bar is drawn only when\n"
@@ -85,6 +88,9 @@ const char* const kRenderHelp =
     "                           by more than T (0 = off)\n"
     "  --adaptive-levels L      maximum subdivision levels for --adaptive (1..8, default 2)\n"
     "  --min-weight W           prune rays whose accumulated weight is below W (default 0 = off)\n"
+    "  --max-rays N             rays (every type) one camera sample may trace before its reflection\n"
+    "                           and refraction rays stop (1..2^40, default 65536): bounds the work\n"
+    "                           of a pixel; samples that reach it are counted and warned about\n"
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
     "  --crop X0,X1,Y0,Y1       render only the window [X0,X1) x [Y0,Y1) of the image, in NDC\n"
@@ -139,9 +145,11 @@ const CommandFlags kRenderFlags{
     "render",
     kRenderHelp,
     {{"--output", "-o", true},      {"--png", "", true},         {"--exposure", "", true},
-     {"--float", "", false},        {"--stats", "", true},       {"--frames", "", true},
+     {"--float", "", false},        {"--compression", "", true}, {"--stats", "", true},
+     {"--frames", "", true},
      {"--quiet", "-q", false},      {"--width", "", true},       {"--height", "", true},
      {"--spp", "", true},           {"--depth", "", true},       {"--seed", "", true},
+     {"--max-rays", "", true},
      {"--adaptive", "", true},      {"--adaptive-levels", "", true}, {"--min-weight", "", true},
      {"--spd", "", false},          {"--crop", "", true},        {"--eye", "", true},
      {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
@@ -157,6 +165,7 @@ struct RenderCli {
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
     bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
+    ExrCompression compression = ExrCompression::Zip;
     double exposure = 0;
     RenderOverrides overrides;
     CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
@@ -262,12 +271,19 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
+        else if (a == "--compression") {
+            const std::string v = p.choice(a, {std::begin(kExrCompressionNames),
+                                               std::end(kExrCompressionNames)});
+            for (size_t i = 0; i < std::size(kExrCompressionNames); ++i)
+                if (v == kExrCompressionNames[i]) cli.compression = ExrCompression(i);
+        }
         else if (a == "--exposure") cli.exposure = p.number(a, -64, 64);
         else if (a == "--width") o.width = int(p.integer(a, 1, kMaxImageSide));
         else if (a == "--height") o.height = int(p.integer(a, 1, kMaxImageSide));
         else if (a == "--spp") o.spp = int(p.integer(a, 1, kMaxSpp));
         else if (a == "--depth") o.maxDepth = int(p.integer(a, 1, kMaxDepth));
         else if (a == "--seed") o.seed = uint64_t(p.integer(a, 0, kMaxSeed));
+        else if (a == "--max-rays") o.maxRaysPerSample = uint64_t(p.integer(a, 1, kMaxRaysPerSampleLimit));
         else if (a == "--adaptive") o.adaptiveThreshold = p.number(a, 0, 1e30);
         else if (a == "--adaptive-levels") o.adaptiveMaxLevel = int(p.integer(a, 1, kMaxAdaptiveLevels));
         else if (a == "--min-weight") o.minWeight = p.number(a, 0, 1);
@@ -339,6 +355,17 @@ SceneLoadOptions sceneLoadOptions(const RenderCli& cli) {
     return o;
 }
 
+/// The one warning of a run whose samples reached the ray cap (`frame` 0:
+/// not a sequence).
+std::string rayCapWarning(const RenderResult& r, const RenderOptions& o, int frame) {
+    const uint64_t samples = r.rays.total(RayType::Camera);
+    return "raylab: warning: " + std::string(frame ? "frame " + std::to_string(frame) + ": " : "") +
+           std::to_string(r.cappedSamples) + " of " + std::to_string(samples) +
+           " camera samples reached the cap of " + std::to_string(o.maxRaysPerSample) +
+           " rays per sample; their deeper reflections and refractions were not traced "
+           "(--max-rays, --depth)\n";
+}
+
 void printSummary(const RenderStats& s, const Film& film, const std::string& exr,
                   const std::string& png) {
     const std::string crop = film.isCrop() ? " (crop " + std::to_string(film.width) + "x" +
@@ -363,6 +390,9 @@ void printSummary(const RenderStats& s, const Film& film, const std::string& exr
     if (s.filter.attenuated > 0 || s.filter.cutOut > 0)
         std::printf("  filter:   %llu transmitter crossings dimmed shadow rays, %llu candidates cut out\n",
                     (unsigned long long)s.filter.attenuated, (unsigned long long)s.filter.cutOut);
+    std::printf("  samples:  at most %llu rays in one sample, %llu capped at %llu\n",
+                (unsigned long long)s.maxSampleRays, (unsigned long long)s.cappedSamples,
+                (unsigned long long)s.maxRaysPerSample);
     std::printf("  speed:    %.2f Mrays/s\n", s.mraysPerSecond());
     std::printf("  output:   %s%s%s\n", exr.c_str(), png.empty() ? "" : ", ", png.c_str());
 }
@@ -449,6 +479,7 @@ int renderCommand(const std::vector<std::string>& args) {
     stats.buildSeconds = secondsSince(t0);
 
     const EffectSet effects = analyseEffects(scene, options);
+    bool warnedCap = false;
     for (int frame = frames.first; frame <= frames.last; ++frame) {
         // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
         const auto output = [&](const std::string& file) {
@@ -481,12 +512,22 @@ int renderCommand(const std::vector<std::string>& args) {
         stats.spp = options.spp;
         stats.maxDepth = options.maxDepth;
         stats.nonFiniteSamples = result.nonFiniteSamples;
+        stats.maxRaysPerSample = options.maxRaysPerSample;
+        stats.cappedSamples = result.cappedSamples;
+        stats.maxSampleRays = result.maxSampleRays;
+        // Once per run (the statistics have every frame's count): a capped
+        // sample lost part of its reflections and refractions.
+        if (result.cappedSamples > 0 && !warnedCap) {
+            warnedCap = true;
+            std::fprintf(stderr, "%s", rayCapWarning(result, options, cli.frames ? frame : 0).c_str());
+        }
         stats.filter = accel->filterCounts() - filterBefore;
 
         enterPhase(Phase::Write);
         t0 = Clock::now();
         ExrOptions exr;
         exr.floatPixels = cli.floatPixels;
+        exr.compression = cli.compression;
         exr.commandLine = imageCommand(args);
         exr.spp = options.spp;
         exr.maxDepth = options.maxDepth;

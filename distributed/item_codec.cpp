@@ -10,11 +10,13 @@ namespace raylab {
 
 namespace {
 
-// Per pixel: rgba (4) + depth (1) + normal (3) + albedo (3) + objectId (1) floats.
-constexpr size_t kPixelBytes = 12 * sizeof(float);
-// Per corner: colour (3 doubles), hit (1 byte), distance (float),
-// normal (3 doubles), albedo (3 doubles), objectId (float).
-constexpr size_t kCornerBytes = 3 * 8 + 1 + 4 + 3 * 8 + 3 * 8 + 4;
+// Per pixel: rgba (4) + the AOV layers: depth (1) + normal (3) + albedo (3) +
+// objectId (1) floats.
+constexpr size_t kAovBytes = 8 * sizeof(float);
+constexpr size_t kPixelBytes = 4 * sizeof(float) + kAovBytes;
+// Per corner: colour (3 doubles), hit (1 byte). An SPD item (corner row y)
+// also carries the AOV layers of pixel row y, which its corners wrote.
+constexpr size_t kCornerBytes = 3 * 8 + 1;
 
 /// Writes into bytes already allocated: one resize per item instead of one
 /// per value (the codec runs on the MPI thread, between messages).
@@ -39,12 +41,19 @@ private:
 }  // namespace
 
 ItemCodec::ItemCodec(const FrameRenderer& frame, const RenderOptions& options)
-    : m_frame(frame), m_spd(options.spd) {}
+    : m_frame(frame), m_spd(options.spd),
+      m_window(cropPixels(options.crop, options.width, options.height)) {}
 
 size_t ItemCodec::payloadBytes(int item) const {
     const WorkRegion r = m_frame.region(item);
     const size_t n = size_t(r.x1 - r.x0) * size_t(r.y1 - r.y0);
-    return n * (m_spd ? kCornerBytes : kPixelBytes);
+    if (!m_spd) return n * kPixelBytes;
+    return n * kCornerBytes + size_t(aovPixels(r)) * kAovBytes;
+}
+
+int ItemCodec::aovPixels(const WorkRegion& r) const {
+    // Corner row y < y1 is the top edge of pixel row y, whose AOVs it wrote.
+    return r.y0 < m_window.y1 ? m_window.width() : 0;
 }
 
 size_t ItemCodec::itemBytes(int item) const { return sizeof(int32_t) + payloadBytes(item); }
@@ -55,36 +64,32 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
     out.resize(at + itemBytes(item));
     SpanWriter w(out.data() + at);
     w.put(int32_t(item));
+    const Film& f = from.film;
+    const auto putAovs = [&](size_t i) {
+        w.putBytes(&f.depth[i], sizeof(float));
+        w.putBytes(&f.normal[3 * i], 3 * sizeof(float));
+        w.putBytes(&f.albedo[3 * i], 3 * sizeof(float));
+        w.putBytes(&f.objectId[i], sizeof(float));
+    };
     if (m_spd) {
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
-                const Sample& s = from.corner(x, y);
+                const CornerSample& s = from.corner(x, y);
                 w.put(s.c.r);
                 w.put(s.c.g);
                 w.put(s.c.b);
-                w.put(uint8_t(s.first.hit ? 1 : 0));
-                w.put(s.first.distance);
-                w.put(s.first.normal.x);
-                w.put(s.first.normal.y);
-                w.put(s.first.normal.z);
-                w.put(s.first.albedo.r);
-                w.put(s.first.albedo.g);
-                w.put(s.first.albedo.b);
-                w.put(s.first.objectId);
+                w.put(uint8_t(s.hit ? 1 : 0));
             }
         }
+        for (int x = 0; x < aovPixels(r); ++x) putAovs(f.index(m_window.x0 + x, r.y0));
         assert(w.position() == out.data() + out.size());
         return;
     }
-    const Film& f = from.film;
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const size_t i = f.index(x, y);
             w.putBytes(&f.rgba[4 * i], 4 * sizeof(float));
-            w.putBytes(&f.depth[i], sizeof(float));
-            w.putBytes(&f.normal[3 * i], 3 * sizeof(float));
-            w.putBytes(&f.albedo[3 * i], 3 * sizeof(float));
-            w.putBytes(&f.objectId[i], sizeof(float));
+            putAovs(i);
         }
     }
     assert(w.position() == out.data() + out.size());
@@ -100,34 +105,30 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
         // Check the whole item first: a truncated message changes nothing.
         if (in.left() < payloadBytes(item)) throw std::runtime_error("message is truncated");
         const WorkRegion r = m_frame.region(item);
+        Film& f = to.film;
+        const auto getAovs = [&](size_t i) {
+            in.getBytes(&f.depth[i], sizeof(float));
+            in.getBytes(&f.normal[3 * i], 3 * sizeof(float));
+            in.getBytes(&f.albedo[3 * i], 3 * sizeof(float));
+            in.getBytes(&f.objectId[i], sizeof(float));
+        };
         if (m_spd) {
             for (int y = r.y0; y < r.y1; ++y) {
                 for (int x = r.x0; x < r.x1; ++x) {
-                    Sample& s = to.corner(x, y);
+                    CornerSample& s = to.corner(x, y);
                     s.c.r = in.get<double>();
                     s.c.g = in.get<double>();
                     s.c.b = in.get<double>();
-                    s.first.hit = in.get<uint8_t>() != 0;
-                    s.first.distance = in.get<float>();
-                    s.first.normal.x = in.get<double>();
-                    s.first.normal.y = in.get<double>();
-                    s.first.normal.z = in.get<double>();
-                    s.first.albedo.r = in.get<double>();
-                    s.first.albedo.g = in.get<double>();
-                    s.first.albedo.b = in.get<double>();
-                    s.first.objectId = in.get<float>();
+                    s.hit = in.get<uint8_t>() != 0;
                 }
             }
+            for (int x = 0; x < aovPixels(r); ++x) getAovs(f.index(m_window.x0 + x, r.y0));
         } else {
-            Film& f = to.film;
             for (int y = r.y0; y < r.y1; ++y) {
                 for (int x = r.x0; x < r.x1; ++x) {
                     const size_t i = f.index(x, y);
                     in.getBytes(&f.rgba[4 * i], 4 * sizeof(float));
-                    in.getBytes(&f.depth[i], sizeof(float));
-                    in.getBytes(&f.normal[3 * i], 3 * sizeof(float));
-                    in.getBytes(&f.albedo[3 * i], 3 * sizeof(float));
-                    in.getBytes(&f.objectId[i], sizeof(float));
+                    getAovs(i);
                 }
             }
         }
@@ -141,6 +142,8 @@ void appendCounters(const WorkCounters& c, std::vector<unsigned char>& out) {
         for (uint64_t n : perType) w.put(n);
     w.put(c.rays.cameraHits);
     w.put(c.nonFinite);
+    w.put(c.cappedSamples);
+    w.put(c.maxSampleRays);
 }
 
 WorkCounters readCounters(ByteReader& in) {
@@ -149,6 +152,8 @@ WorkCounters readCounters(ByteReader& in) {
         for (uint64_t& n : perType) n = in.get<uint64_t>();
     c.rays.cameraHits = in.get<uint64_t>();
     c.nonFinite = in.get<uint64_t>();
+    c.cappedSamples = in.get<uint64_t>();
+    c.maxSampleRays = in.get<uint64_t>();
     return c;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The bytes a rank sends rank 0 for finished work items: the pixels of a
-// tile, or in SPD mode a row of corner samples, and the rank's ray counters.
+// tile, or in SPD mode a row of corner samples with the AOV layers of the
+// pixel row below it, and the rank's ray counters.
 // Every float and double is copied bit for bit, so the gathered frame is
 // bit-identical to one rendered in a single process (no text, no rounding).
 
@@ -30,9 +31,13 @@ public:
 
 private:
     size_t payloadBytes(int item) const;
+    /// SPD items: pixels of the film row whose AOV layers travel with region r
+    /// (from m_window.x0 on).
+    int aovPixels(const WorkRegion& r) const;
 
     const FrameRenderer& m_frame;
     bool m_spd;
+    PixelWindow m_window;  ///< the pixels of the frame (the crop window, or the whole image)
 };
 
 /// Appends every counter of `c` (ray counts per type and depth, camera hits,

@@ -51,10 +51,7 @@ void LocalWorker::rethrowIfFailed() {
 
 WorkCounters LocalWorker::counters() const {
     WorkCounters sum;
-    for (const WorkCounters& c : m_counters) {
-        sum.rays += c.rays;
-        sum.nonFinite += c.nonFinite;
-    }
+    for (const WorkCounters& c : m_counters) sum += c;
     return sum;
 }
 

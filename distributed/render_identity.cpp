@@ -33,6 +33,7 @@ std::string optionWords(const RenderOptions& o) {
     add("adaptive", exact(o.adaptiveThreshold));
     add("adaptive_levels", std::to_string(o.adaptiveMaxLevel));
     add("seed", std::to_string(o.seed));
+    add("max_rays", std::to_string(o.maxRaysPerSample));
     add("accel", acceleratorName(o.accel));
     add("bvh_quality", bvhQualityName(o.accelOptions.quality));
     add("robust", o.accelOptions.robust ? "on" : "off");

@@ -195,12 +195,9 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
     result.renderSeconds = secondsSince(job.start);
     // Integer sums: the same totals as one process, whatever the split.
     const WorkCounters own = local.counters();
-    result.rays = own.rays;
-    result.nonFiniteSamples = own.nonFinite;
-    for (int r = 1; r < ranks; ++r) {
-        result.rays += peers[size_t(r)].counters.rays;
-        result.nonFiniteSamples += peers[size_t(r)].counters.nonFinite;
-    }
+    WorkCounters sum = own;
+    for (int r = 1; r < ranks; ++r) sum += peers[size_t(r)].counters;
+    result.setCounters(sum);
     result.film = std::move(buffers.film);
 
     if (report) {

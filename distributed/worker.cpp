@@ -59,8 +59,7 @@ RenderResult runWorker(const FrameJob& job, const std::atomic<bool>* cancel) {
                                      std::to_string(int(job.timeout)) + " s");
         RenderResult result;
         result.cancelled = cancelled;
-        result.rays = counters.rays;
-        result.nonFiniteSamples = counters.nonFinite;
+        result.setCounters(counters);
         result.renderSeconds = secondsSince(job.start);
         return result;
     };

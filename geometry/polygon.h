@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "geometry/frame.h"
+#include "geometry/polygon_grid.h"
 #include "geometry/primitives.h"
 #include "geometry/analytic_shape.h"
 
@@ -83,6 +84,8 @@ public:
     FillRule fillRule() const { return m_rule; }
     /// The inside test this polygon was created with.
     PolygonTest insideTest() const { return m_test; }
+    /// The exact filter in front of the watertight test, or null (small polygons).
+    const PolygonGrid* grid() const { return m_grid.get(); }
     bool hasShadingNormals() const override { return !m_normals.empty(); }
 
     /// Use create(); public for std::make_unique.
@@ -94,6 +97,9 @@ private:
     bool insideProjected(const Vec3T<T>& p) const;
     template <class T>
     bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const;
+    /// The grid's answer for the plane hit o + t·d (cosine = n·d), or -1 when
+    /// it cannot be trusted to equal the watertight test's (see polygon.cpp).
+    int insideByGrid(const Ray& ray, double t, double cosine, const Vec3& local) const;
     bool accepts(int winding, int crossings) const;
     Vec3 interpolatedNormal(const Vec3& p) const;
     /// The unit shading normal at plane point p (ng without vertex normals).
@@ -115,6 +121,11 @@ private:
     Vec2 m_uvOrigin;  ///< lower-left corner of the bounding rectangle in (t, b)
     Vec2 m_uvSize;    ///< its extent along t and b
     int m_dropAxis;  ///< dominant axis of the normal (Projected test)
+    double m_deviation;  ///< largest vertex distance from the plane
+    double m_radius;     ///< largest vertex distance from the centroid
+    /// Exact filter in front of the watertight test (polygons with many
+    /// vertices only; null otherwise).
+    std::unique_ptr<const PolygonGrid> m_grid;
     FillRule m_rule;
     PolygonTest m_test;
 };

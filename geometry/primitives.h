@@ -69,4 +69,8 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3>&
 /// than 3 distinct corners, too many corners).
 std::vector<std::array<uint32_t, 3>> triangulateFace(const std::vector<Vec3>& corners);
 
+/// triangulateFace into `out` (cleared first): a mesh loader reusing one
+/// vector allocates nothing for triangles and convex quads.
+void triangulateFace(const std::vector<Vec3>& corners, std::vector<std::array<uint32_t, 3>>& out);
+
 }  // namespace raylab

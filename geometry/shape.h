@@ -43,6 +43,10 @@ struct IntersectOptions {
     Precision precision = Precision::Double;
     /// When set, every polygon uses this inside test instead of its own.
     std::optional<PolygonTest> polygonTest;
+    /// Large polygons answer most watertight inside tests from a grid that
+    /// gives exactly the watertight test's answer (geometry/polygon_grid.h);
+    /// off only to compare the two (tests, `raylab bench primitives`).
+    bool polygonGrid = true;
 };
 
 /// Minimal record of a candidate hit.

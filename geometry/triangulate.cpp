@@ -75,8 +75,12 @@ bool convexQuad(const std::vector<Vec3>& q, const Vec3& n) {
 
 }  // namespace
 
-std::vector<std::array<uint32_t, 3>> triangulateFace(const std::vector<Vec3>& corners) {
-    if (corners.size() == 3) return {{0, 1, 2}};
+void triangulateFace(const std::vector<Vec3>& corners, std::vector<std::array<uint32_t, 3>>& out) {
+    out.clear();
+    if (corners.size() == 3) {
+        out.push_back({0, 1, 2});
+        return;
+    }
     if (corners.size() == 4 && convexQuad(corners, newellNormal(corners))) {
         // Both splits are valid; the shorter diagonal keeps the triangles
         // closest to equilateral (tinyobjloader's rule and index order). The
@@ -85,10 +89,22 @@ std::vector<std::array<uint32_t, 3>> triangulateFace(const std::vector<Vec3>& co
         const Vec3f e02 = Vec3f(corners[2]) - Vec3f(corners[0]);
         const Vec3f e13 = Vec3f(corners[3]) - Vec3f(corners[1]);
         const float d02 = lengthSquared(e02), d13 = lengthSquared(e13);
-        if (d02 < d13) return {{0, 1, 2}, {0, 2, 3}};
-        return {{0, 1, 3}, {1, 2, 3}};
+        if (d02 < d13) {
+            out.push_back({0, 1, 2});
+            out.push_back({0, 2, 3});
+        } else {
+            out.push_back({0, 1, 3});
+            out.push_back({1, 2, 3});
+        }
+        return;
     }
-    return triangulatePolygon(corners);
+    out = triangulatePolygon(corners);
+}
+
+std::vector<std::array<uint32_t, 3>> triangulateFace(const std::vector<Vec3>& corners) {
+    std::vector<std::array<uint32_t, 3>> out;
+    triangulateFace(corners, out);
+    return out;
 }
 
 std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3>& vertices) {

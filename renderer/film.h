@@ -7,9 +7,13 @@
 #include <vector>
 
 #include "geometry/vec.h"
+#include "renderer/huge_page_allocator.h"
 #include "shading/color.h"
 
 namespace raylab {
+
+/// One layer of the film: megabytes per frame, so on huge pages (huge_page_allocator.h).
+using FilmPlane = std::vector<float, HugePageAllocator<float>>;
 
 struct Film {
     int width = 0, height = 0;
@@ -19,11 +23,11 @@ struct Film {
     /// has origin 0 and full size = its size.
     int originX = 0, originY = 0;
     int fullWidth = 0, fullHeight = 0;
-    std::vector<float> rgba;      ///< 4 floats per pixel; A = coverage (fraction of samples that hit)
-    std::vector<float> depth;     ///< Z: eye distance to the first hit, +inf where nothing is hit
-    std::vector<float> normal;    ///< 3 floats per pixel: world shading normal of the first hit
-    std::vector<float> albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
-    std::vector<float> objectId;  ///< index of the first object hit, -1 for background
+    FilmPlane rgba;      ///< 4 floats per pixel; A = coverage (fraction of samples that hit)
+    FilmPlane depth;     ///< Z: eye distance to the first hit, +inf where nothing is hit
+    FilmPlane normal;    ///< 3 floats per pixel: world shading normal of the first hit
+    FilmPlane albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
+    FilmPlane objectId;  ///< index of the first object hit, -1 for background
 
     Film() = default;
     Film(int w, int h) : Film(w, h, 0, 0, w, h) {}

@@ -21,6 +21,7 @@
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
 #include "renderer/timing.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
@@ -28,12 +29,14 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-/// Replaces a non-finite radiance by black and counts it: no NaN or Inf may
-/// ever reach a pixel.
+/// No NaN or Inf may ever reach a pixel. The integrator saturates overflows
+/// (shading/radiance_range.h), so a non-finite sample is a defect: counted,
+/// an Inf kept as the largest double (never hidden as black), a NaN black.
 Color sanitize(const Color& c, uint64_t& nonFinite) {
     if (c.isFinite()) return c;
     ++nonFinite;
-    return Color{};
+    const auto fix = [](double v) { return std::isnan(v) ? 0.0 : saturated(v); };
+    return {fix(c.r), fix(c.g), fix(c.b)};
 }
 
 void storeFirstHit(Film& film, size_t i, const FirstHit& f) {
@@ -56,7 +59,10 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
                    const RenderOptions& opt, double px, double py, WorkCounters& tc) {
     Sample s;
     const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
-    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first), tc.nonFinite);
+    SampleRays spent;
+    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, spent, &tc.shadows), tc.nonFinite);
+    tc.cappedSamples += spent.capped;
+    tc.maxSampleRays = std::max(tc.maxSampleRays, spent.traced);
     return s;
 }
 
@@ -170,6 +176,21 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
 
 }  // namespace
 
+WorkCounters& WorkCounters::operator+=(const WorkCounters& o) {
+    rays += o.rays;
+    nonFinite += o.nonFinite;
+    cappedSamples += o.cappedSamples;
+    maxSampleRays = std::max(maxSampleRays, o.maxSampleRays);
+    return *this;
+}
+
+void RenderResult::setCounters(const WorkCounters& c) {
+    rays = c.rays;
+    nonFiniteSamples = c.nonFinite;
+    cappedSamples = c.cappedSamples;
+    maxSampleRays = c.maxSampleRays;
+}
+
 FrameRenderer::FrameRenderer(const Scene& scene, const Accelerator& accel,
                              const RenderOptions& options, const EffectSet& effects)
     : m_scene(scene), m_options(options),
@@ -221,9 +242,15 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
     const WorkRegion r = region(item);
     if (m_options.spd) {
         // SPD procedure: one eye ray through every pixel corner, (W+1)·(H+1)
-        // rays; a work item is one row of corners.
-        for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i)
-            buffers.corner(i, r.y0) = traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+        // rays; a work item is one row of corners. Corner (i, y) is the
+        // top-left corner of pixel (i, y), whose AOV layers come from it.
+        const bool aovRow = r.y0 < m_window.y1 && m_options.wantAovs;
+        for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i) {
+            const Sample s = traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+            buffers.corner(i, r.y0) = {s.c, s.first.hit};
+            if (aovRow && i < m_window.x1 && s.first.hit)
+                storeFirstHit(buffers.film, buffers.film.index(i, r.y0), s.first);
+        }
         return;
     }
     if (m_options.adaptiveThreshold > 0) {
@@ -247,22 +274,22 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
             renderPixel(*m_integrator, m_scene, m_options, buffers.film, x, y, counters);
 }
 
-void FrameRenderer::finish(FrameBuffers& buffers) const {
+void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
     if (!m_options.spd) return;
     // Each pixel is the mean of its four corners.
     Film& film = buffers.film;
-    for (int y = m_window.y0; y < m_window.y1; ++y) {
-        for (int x = m_window.x0; x < m_window.x1; ++x) {
-            const Sample& a = buffers.corner(x, y);
-            const Sample& b = buffers.corner(x + 1, y);
-            const Sample& c = buffers.corner(x, y + 1);
-            const Sample& d = buffers.corner(x + 1, y + 1);
-            const size_t i = film.index(x, y);
-            if (a.first.hit && m_options.wantAovs) storeFirstHit(film, i, a.first);
-            storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25,
-                       0.25 * (a.first.hit + b.first.hit + c.first.hit + d.first.hit));
-        }
+    const CornerSample* top = &buffers.corner(m_window.x0, y);
+    const CornerSample* bottom = &buffers.corner(m_window.x0, y + 1);
+    for (int x = m_window.x0, k = 0; x < m_window.x1; ++x, ++k) {
+        const CornerSample &a = top[k], &b = top[k + 1], &c = bottom[k], &d = bottom[k + 1];
+        storePixel(film, film.index(x, y), (a.c + b.c + c.c + d.c) * 0.25,
+                   0.25 * (a.hit + b.hit + c.hit + d.hit));
     }
+}
+
+void FrameRenderer::finish(FrameBuffers& buffers) const {
+    if (!m_options.spd) return;
+    tbb::parallel_for(m_window.y0, m_window.y1, [&](int y) { finishRow(buffers, y); });
 }
 
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
@@ -280,6 +307,15 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
     std::atomic<int> done{0};
     std::mutex progressMutex;
 
+    // SPD mode: pixel row y is averaged as soon as corner rows y and y + 1
+    // are both done, by the thread that finished the second one (while the
+    // corners are still in its cache), instead of in a serial pass at the end.
+    // Item k is corner row y0 + k of the (crop) window; counted per film row.
+    const int pixelRows = options.spd ? buffers.film.height : 0;
+    const int rowY0 = buffers.film.originY;
+    std::unique_ptr<std::atomic<int>[]> cornerRowsDone(new std::atomic<int>[size_t(pixelRows)]);
+    for (int y = 0; y < pixelRows; ++y) cornerRowsDone[y] = 0;
+
     RenderResult result;
     const auto start = std::chrono::steady_clock::now();
     tbb::parallel_for(
@@ -289,6 +325,10 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
             for (int item = range.begin(); item != range.end(); ++item) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 frame.renderWorkItem(item, buffers, local);
+                // Corner row y0 + item borders film rows item - 1 and item.
+                for (int y = item - 1; y <= item; ++y)
+                    if (y >= 0 && y < pixelRows && ++cornerRowsDone[y] == 2)
+                        frame.finishRow(buffers, rowY0 + y);
                 const int n = ++done;
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progressMutex);
@@ -299,15 +339,13 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
         tbb::simple_partitioner());
     // A stop request also cuts tiles short (per pixel), whatever `cancel` is.
     result.cancelled = (cancel && cancel->load()) || cancelRequested();
-    if (!result.cancelled) frame.finish(buffers);
     result.renderSeconds =
         secondsSince(start);
 
     // Integer sums: the same totals whatever the thread count.
-    for (const WorkCounters& c : counters) {
-        result.rays += c.rays;
-        result.nonFiniteSamples += c.nonFinite;
-    }
+    WorkCounters sum;
+    for (const WorkCounters& c : counters) sum += c;
+    result.setCounters(sum);
     result.film = std::move(buffers.film);
     return result;
 }

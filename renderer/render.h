@@ -26,25 +26,40 @@ struct Sample {
     FirstHit first;
 };
 
-/// Ray counts and replaced non-finite samples of one worker.
+/// One corner of the SPD procedure's grid: all that the pixels around it read
+/// from it (the AOV layers come from each pixel's top-left corner and are
+/// stored straight into the film), 32 bytes instead of a Sample's 112.
+struct CornerSample {
+    Color c;
+    bool hit;
+};
+
+/// Ray counts and replaced non-finite samples of one worker (or the sum of
+/// several: integer sums and a maximum, the same whatever the split), and the
+/// shadow cache its ray trees share (renderer/shadow_cache.h).
 struct WorkCounters {
     RayCounters rays;
     uint64_t nonFinite = 0;
+    uint64_t cappedSamples = 0;  ///< samples whose ray tree the per-sample cap cut short
+    uint64_t maxSampleRays = 0;  ///< the most rays one sample traced
+    ShadowCache shadows;         ///< not summed: a per-worker speed aid
+
+    WorkCounters& operator+=(const WorkCounters& o);
 };
 
 /// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
 /// of the SPD procedure (of the crop window's pixels in a crop render).
 struct FrameBuffers {
     Film film;
-    std::vector<Sample> corners;
+    std::vector<CornerSample, HugePageAllocator<CornerSample>> corners;
     int cornerX0 = 0, cornerY0 = 0;  ///< full-image corner at corners[0]
     int cornerStride = 0;            ///< corners per row
 
     /// Corner (x, y) of the full image's corner grid.
-    Sample& corner(int x, int y) {
+    CornerSample& corner(int x, int y) {
         return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
     }
-    const Sample& corner(int x, int y) const {
+    const CornerSample& corner(int x, int y) const {
         return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
     }
 };
@@ -70,9 +85,16 @@ public:
     int workItemCount() const;
     WorkRegion region(int item) const;
     FrameBuffers makeBuffers() const;
-    /// Renders one item into `buffers` (thread-safe for distinct items).
+    /// Renders one item into `buffers` (thread-safe for distinct items). In
+    /// SPD mode an item is corner row y (of the window): the film's AOV layers of pixel row y
+    /// are written too (from each pixel's top-left corner), its RGBA only by
+    /// finishRow once corner rows y and y + 1 both exist.
     void renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const;
-    /// After every item: SPD mode averages the corners into pixels.
+    /// SPD mode: pixel row y (full-image coordinates, inside the window)
+    /// becomes the mean of its corners (needs corner rows y and y + 1;
+    /// thread-safe for distinct rows). Nothing to do otherwise.
+    void finishRow(FrameBuffers& buffers, int y) const;
+    /// After every item: finishRow for every pixel row of the window (in parallel).
     void finish(FrameBuffers& buffers) const;
 
 private:
@@ -92,7 +114,12 @@ struct RenderResult {
     RayCounters rays;
     double renderSeconds = 0;
     uint64_t nonFiniteSamples = 0;  ///< samples that were NaN/Inf and were replaced by black
+    uint64_t cappedSamples = 0;     ///< samples that reached RenderOptions::maxRaysPerSample
+    uint64_t maxSampleRays = 0;     ///< the most rays one sample traced
     bool cancelled = false;
+
+    /// Takes the counts of every worker (called once with their sum).
+    void setCounters(const WorkCounters& c);
 };
 
 /// Renders the scene. Deterministic: the film and the counters are

@@ -2,6 +2,7 @@
 // Everything that controls one render, after the scene file's settings and the
 // command-line flags have been merged (flags win).
 
+#include <cstdint>
 #include <string>
 
 #include "geometry/spawn.h"
@@ -19,6 +20,13 @@ constexpr int kMaxSpp = 65536;
 constexpr int kMaxDepth = 64;  ///< RenderStats counts rays per depth up to this
 constexpr int kMaxAdaptiveLevels = 8;
 constexpr long long kMaxSeed = 1LL << 53;  ///< JSON numbers are doubles: exact up to here
+/// Rays (of every type) one camera sample may trace before its reflection and
+/// refraction rays stop: a glass sphere inside a mirror doubles its ray tree
+/// at every level, so without a cap depth 64 never ends. No shipped picture
+/// and no SPD scene comes near it (docs/robustness.md, "Bounded work per
+/// sample"); --max-rays changes it.
+constexpr uint64_t kDefaultMaxRaysPerSample = 1u << 16;
+constexpr long long kMaxRaysPerSampleLimit = 1LL << 40;  ///< the largest --max-rays
 
 struct RenderOptions {
     int width = 640;
@@ -29,6 +37,7 @@ struct RenderOptions {
     double adaptiveThreshold = 0;  ///< Whitted adaptive supersampling threshold (0 = off)
     int adaptiveMaxLevel = 2;      ///< subdivision levels below the pixel corners
     uint64_t seed = 0;        ///< jitter seed; the image is a pure function of it
+    uint64_t maxRaysPerSample = kDefaultMaxRaysPerSample;  ///< see kDefaultMaxRaysPerSample
 
     int threads = 0;          ///< 0 = all cores
     AcceleratorKind accel = AcceleratorKind::Embree;

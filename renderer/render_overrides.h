@@ -23,6 +23,7 @@ struct RenderOverrides {
     std::optional<int> width, height, spp, maxDepth, threads, adaptiveMaxLevel;
     std::optional<double> adaptiveThreshold, minWeight, epsilon;
     std::optional<uint64_t> seed;
+    std::optional<uint64_t> maxRaysPerSample;  ///< --max-rays, JSON render.max_rays
     std::optional<AcceleratorKind> accel;
     std::optional<AccelOptions::BvhQuality> bvhQuality;
     std::optional<Precision> precision;

@@ -23,6 +23,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.adaptiveMaxLevel) r.adaptiveMaxLevel = *o.adaptiveMaxLevel;
     if (o.minWeight) r.minWeight = *o.minWeight;
     if (o.seed) r.seed = *o.seed;
+    if (o.maxRaysPerSample) r.maxRaysPerSample = *o.maxRaysPerSample;
     if (o.accel) r.accel = *o.accel;
     if (o.bvhQuality) r.accelOptions.quality = *o.bvhQuality;
     if (o.robust) r.accelOptions.robust = true;

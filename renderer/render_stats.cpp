@@ -138,6 +138,11 @@ std::string RenderStats::toJson() const {
     json.endObject();
 
     json.number("non_finite_samples", nonFiniteSamples);
+    json.beginObject("ray_cap");
+    json.number("rays_per_sample", maxRaysPerSample);
+    json.number("capped_samples", cappedSamples);
+    json.number("most_rays_in_a_sample", maxSampleRays);
+    json.endObject();
     json.beginObject("surface_filter");
     json.number("cut_out_candidates", filter.cutOut);
     json.number("attenuating_crossings", filter.attenuated);

@@ -63,6 +63,9 @@ struct RenderStats {
     std::string accel;
     int width = 0, height = 0, spp = 0, maxDepth = 0;
     uint64_t nonFiniteSamples = 0;  ///< samples whose radiance was NaN/Inf and was replaced
+    uint64_t maxRaysPerSample = 0;  ///< the cap (RenderOptions::maxRaysPerSample)
+    uint64_t cappedSamples = 0;     ///< samples that reached it (their trees were cut)
+    uint64_t maxSampleRays = 0;     ///< the most rays one sample traced
     /// Candidate hits cut out and transmitter crossings of shadow feelers
     /// (this process's accelerator: under mpirun, rank 0's share).
     FilterCounts filter;

@@ -5,8 +5,10 @@
 #include <cmath>
 
 #include "geometry/spawn.h"
+#include "renderer/cancel.h"
 #include "shading/brdf.h"
 #include "shading/optics.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
@@ -43,25 +45,43 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     m_kernel = table[m_effects.kernel & kAllKernelEffects];
 }
 
-Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const {
+Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
+                            SampleRays& spent, ShadowCache* shadows) const {
     // The near plane (NFF's hither) is a distance along the view axis.
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
     const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
-    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, counters, first);
+    if (shadows) shadows->prepare(m_scene.lights.size(), m_options.maxDepth);
+    TraceState state{counters, shadows, spent};
+    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first);
+}
+
+bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
+    // A stop request ends even a ray tree of depth 64 within one ray (the
+    // pixel loops check only between pixels).
+    if (cancelRequested()) return false;
+    // The cap bounds the work of one sample; the rays are counted in the
+    // sample's own depth-first order, so the cut falls at the same ray for
+    // any thread count.
+    if (spent.traced < m_options.maxRaysPerSample) return true;
+    spent.capped = true;
+    return false;
 }
 
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
-                                    int depth, RayCounters& counters) const {
-    Color result = m.ka * m_scene.ambient;  // ambient once, kept in shadow
+                                    int depth, TraceState& state) const {
+    // Radiance saturates at the largest double (shading/radiance_range.h):
+    // an overflow is as bright as can be, never Inf, never NaN, never black.
+    Color result = saturated(m.ka * m_scene.ambient);  // ambient once, kept in shadow
     if constexpr ((E & kShadows) == 0) {
         return result;
     } else {
         // SPD counts shadow rays even from surfaces without a local term.
         if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
         const Color diffuse = diffuseAt(si, m);
-        for (const Light& light : m_scene.lights) {
+        for (size_t li = 0; li < m_scene.lights.size(); ++li) {
+            const Light& light = m_scene.lights[li];
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
             double tMax;
             if (light.type == Light::Type::Point) {
@@ -78,15 +98,20 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
             const bool facing = dot(n, l) > 0;
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
-            counters.count(RayType::Shadow, depth + 1);
+            state.counters.count(RayType::Shadow, depth + 1);
+            ++state.spent.traced;
+            OcclusionHint* hint = state.shadows ? &state.shadows->at(li, depth) : nullptr;
             // Filtered shadows: the light arrives dimmed by the transmitters
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
             if (m_effects.filteredShadows) {
-                const Color through = m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
+                const Color through = hint ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, *hint)
+                                           : m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
                 if (through.isBlack() || !facing) continue;
-                arriving = arriving * through;
-            } else if (m_accel.occluded(shadow.ray, shadow.tMin, tMax) || !facing) {
+                arriving = saturated(arriving * saturated(through));
+            } else if ((hint ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, *hint)
+                             : m_accel.occluded(shadow.ray, shadow.tMin, tMax)) ||
+                       !facing) {
                 continue;
             }
             result += lambert(diffuse, arriving, n, l);
@@ -97,17 +122,18 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
                                   : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
             }
         }
-        return result;
+        return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
     }
 }
 
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, RayCounters& counters, FirstHit* first) const {
-    counters.count(type, depth);
+                               double weight, TraceState& state, FirstHit* first) const {
+    state.counters.count(type, depth);
+    ++state.spent.traced;
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
     if (!hit) return m_scene.background;
-    if (type == RayType::Camera) counters.cameraHits++;
+    if (type == RayType::Camera) state.counters.cameraHits++;
 
     const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect);
     const Material& m = m_scene.materials[si.material];
@@ -127,7 +153,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     }
 
     const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays
-    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, counters);
+    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, state);
     if (depth >= m_options.maxDepth) return result;
 
     constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;
@@ -146,29 +172,31 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const double etaT = entering ? m.ior : 1.0;
                 const std::optional<Vec3> t = refract(dir, n, etaI, etaT);
                 if (t) {
-                    const double w = weight * m.kt.maxComponent();
-                    if (!m_prune || m_options.spd || w >= m_options.minWeight) {
+                    const double w = saturated(weight * m.kt.maxComponent());
+                    if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(state.spent)) {
                         const SpawnedRay r = spawn(*t);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  counters, nullptr);
+                                                  state, nullptr);
                     }
                 } else {
-                    reflectWeight += m.kt;  // total internal reflection
+                    reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
                     traceReflection = traceReflection || m.transmissive() || !m_prune;
                 }
             }
         }
         if (traceReflection) {
-            const double w = weight * reflectWeight.maxComponent();
-            if (!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) {
+            const double w = saturated(weight * reflectWeight.maxComponent());
+            if ((!m_prune || (w > 0 && w >= m_options.minWeight) || m_options.spd) &&
+                mayBranch(state.spent)) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   counters, nullptr);
+                                                   state, nullptr);
             }
         }
     }
-    return result;
+    // Finite weights times finite radiance, all >= 0: at worst +Inf, saturated.
+    return saturated(result);
 }
 
 }  // namespace raylab

@@ -12,6 +12,7 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_cache.h"
 
 namespace raylab {
 
@@ -24,26 +25,48 @@ struct FirstHit {
     float objectId = -1;
 };
 
+/// What one camera sample spent: the rays it traced (every type) and whether
+/// the per-sample cap (RenderOptions::maxRaysPerSample) refused it a
+/// reflection or refraction ray.
+struct SampleRays {
+    uint64_t traced = 0;
+    bool capped = false;
+};
+
 class WhittedIntegrator {
 public:
     WhittedIntegrator(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                       const EffectSet& effects);
 
-    /// Radiance along a camera ray. Counts rays into `counters`; fills
-    /// `first` (may be null) with the first hit's AOV data.
-    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first) const;
+    /// Radiance along a camera ray. Counts rays into `counters` and into
+    /// `spent` (this sample alone); fills `first` (may be null) with the first
+    /// hit's AOV data. After a stop request (renderer/cancel.h) no further
+    /// reflection or refraction ray is traced: the result is then partial.
+    /// `shadows` (may be null) is the calling thread's shadow cache: it
+    /// changes no answer, only how fast shadow rays are answered.
+    Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
+             ShadowCache* shadows = nullptr) const;
 
 private:
+    /// What one worker carries through a ray tree.
+    struct TraceState {
+        RayCounters& counters;
+        ShadowCache* shadows;
+        SampleRays& spent;  ///< this sample's rays, for the per-sample cap
+    };
+
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                RayCounters& counters, FirstHit* first) const;
+                TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     RayCounters& counters) const;
+                     TraceState& state) const;
+    /// Whether the sample may trace one more reflection or refraction ray.
+    bool mayBranch(SampleRays& spent) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                RayCounters&, FirstHit*) const;
+                                                TraceState&, FirstHit*) const;
 
     const Scene& m_scene;
     const Accelerator& m_accel;

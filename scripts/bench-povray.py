@@ -3,7 +3,7 @@
 
     scripts/bench-povray.py [--repeats 3] [--threads 2] [--scenes balls,gears,...]
                             [--pov-triangles mesh2[,mesh][,objects]] [--pov-polygons triangulate|polygon]
-                            [--raylab build/bin/raylab] [--povray povray]
+                            [--raylab build/bin/raylab] [--raylab-before OTHER] [--povray povray]
                             [--spd-dir ../shared/scenes/spd] [--images DIR]
                             [--json FILE] [--work DIR]
 
@@ -36,6 +36,10 @@ does not help against other users' builds).
 --pov-triangles mesh2,objects (any of mesh2, mesh, objects) times POV-Ray on
 each form of the scene in the same rounds and compares raylab with the fastest
 (per scene); the times of every form are printed below the table.
+
+--raylab-before OTHER times a second raylab binary (e.g. a build of main) in
+the same rounds and prints both with their ratios: a before/after table
+measured under the same load.
 
 --images DIR writes DIR/SCENE.png: raylab's picture (left, `--png` of the
 warm-up run) and POV-Ray's (right), box-filtered to 256x256, plus the mean
@@ -159,6 +163,8 @@ def main(argv=None):
     ap.add_argument("--threads", type=int, default=2, help="threads of both renderers (default 2)")
     ap.add_argument("--scenes", default=",".join(SCENES), help="comma-separated subset of " + ",".join(SCENES))
     ap.add_argument("--raylab", default=os.path.join(TOP, "build", "bin", "raylab"))
+    ap.add_argument("--raylab-before", metavar="PATH",
+                    help="a second raylab binary timed in the same rounds (before/after of a change)")
     ap.add_argument("--povray", default="povray")
     ap.add_argument("--spd-dir", default=os.path.join(TOP, "..", "shared", "scenes", "spd"),
                     help="where balls/gears/rings/teapot/tetra.nff are (default ../shared/scenes/spd)")
@@ -197,6 +203,10 @@ def main(argv=None):
     raylab = os.path.abspath(args.raylab)
     if not os.access(raylab, os.X_OK):
         die("no raylab binary at %s (build first, or give --raylab)" % raylab)
+    if args.raylab_before:
+        args.raylab_before = os.path.abspath(args.raylab_before)
+        if not os.access(args.raylab_before, os.X_OK):
+            die("no raylab binary at %s (--raylab-before)" % args.raylab_before)
     povray = shutil.which(args.povray)
     if not povray:
         die("POV-Ray not found ('%s'): scripts/install-deps.sh --optional installs it" % args.povray)
@@ -236,8 +246,8 @@ def bench(args, scenes, raylab, povray, work):
                 "+O" + os.path.join(work, "%s_pov_%s.png" % (s, form)),
                 "+W512", "+H512", "-D", "-A", "+WT%d" % args.threads, "-V", "-GA"]
 
-    def ray_cmd(s, extra=()):
-        return [raylab, "render", nff[s], "--spd", "-o", os.path.join(work, s + ".exr"), "--quiet",
+    def ray_cmd(s, extra=(), binary=None):
+        return [binary or raylab, "render", nff[s], "--spd", "-o", os.path.join(work, s + ".exr"), "--quiet",
                 "--threads", str(args.threads), "--stats", os.path.join(work, s + "_stats.json")] + list(extra)
 
     machine = {
@@ -257,7 +267,7 @@ def bench(args, scenes, raylab, povray, work):
         run_timed(ray_cmd(s, ["--png", os.path.join(work, s + "_raylab.png")]), log)
 
     # ---- timed, interleaved rounds ----
-    runners = ["pov_" + f for f in args.pov_forms] + ["raylab"]
+    runners = ["pov_" + f for f in args.pov_forms] + ["raylab"] + (["before"] if args.raylab_before else [])
     samples = {s: {k: [] for k in runners + [r + "_cpu" for r in runners] + ["stats"]} for s in scenes}
     for r in range(args.repeats):
         for i, s in enumerate(scenes):
@@ -267,6 +277,8 @@ def bench(args, scenes, raylab, povray, work):
             for who in order:
                 if who.startswith("pov_"):
                     wall, cpu = run_timed(pov_cmd(s, who[4:]), log)
+                elif who == "before":
+                    wall, cpu = run_timed(ray_cmd(s, binary=args.raylab_before), log)
                 else:
                     wall, cpu = run_timed(ray_cmd(s), log)
                     with open(os.path.join(work, s + "_stats.json")) as fh:
@@ -293,6 +305,9 @@ def bench(args, scenes, raylab, povray, work):
                      "povray_cpu_s": med(d["pov_%s_cpu" % best]), "raylab_cpu_s": med(d["raylab_cpu"]),
                      "raylab_phases_s": phase, "rays": d.get("rays"), "primitives": d.get("primitives"),
                      "samples": {k: v for k, v in d.items() if k != "stats"}})
+        if args.raylab_before:
+            rows[-1]["before_s"] = med(d["before"])
+            rows[-1]["before_cpu_s"] = med(d["before_cpu"])
 
     la, lb = machine["load_before"], machine["load_after"]
     print("machine: %s, %d logical CPUs, %.1f GiB; %s" % (machine["cpu"], machine["logical_cpus"],
@@ -315,6 +330,16 @@ def bench(args, scenes, raylab, povray, work):
             p["write"], p["other"]))
     print()
     print("smallest ratio: %.1f× (%s)" % min((r["ratio"], r["scene"]) for r in rows))
+    if args.raylab_before:
+        print()
+        print("raylab before (%s) and after (%s), same rounds:" % (args.raylab_before, raylab))
+        print()
+        print("| scene | before s | after s | after faster by | POV-Ray ÷ before | POV-Ray ÷ after | before CPU s | after CPU s |")
+        print("|---|---:|---:|---:|---:|---:|---:|---:|")
+        for row in rows:
+            print("| %s | %.3f | %.3f | %.2f× | %.1f× | %.1f× | %.3f | %.3f |" % (
+                row["scene"], row["before_s"], row["raylab_s"], row["before_s"] / row["raylab_s"],
+                row["povray_s"] / row["before_s"], row["ratio"], row["before_cpu_s"], row["raylab_cpu_s"]))
     if several:
         print()
         print("POV-Ray wall s by scene form (medians of the same rounds):")

@@ -11,6 +11,7 @@ required=(
   libembree-dev         # Embree 3: BVH build and traversal, user geometry
   libtbb-dev            # oneTBB: parallel tile loop
   libopenexr-dev        # OpenEXR: HDR output with AOV layers
+  libtinyobjloader-dev  # tinyobjloader: MTL libraries; the reference OBJ parser of the differential test
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview
   python3               # scripts/spd (SPD generators, NFF -> POV-Ray) and their tests

@@ -6,20 +6,24 @@
 
 #include "geometry/vec.h"
 #include "shading/color.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
 /// Lambert: kd · I · max(0, N·L).
 inline Color lambert(const Color& kd, const Color& lightIntensity, const Vec3& n, const Vec3& l) {
-    return kd * lightIntensity * std::max(0.0, dot(n, l));
+    const double cosine = std::max(0.0, dot(n, l));
+    return saturatedProduct(kd, lightIntensity, cosine, [cosine] { return (long double)cosine; });
 }
 
 /// x^s: by repeated squaring when s is a whole number up to 1024 (the usual
 /// case, several times cheaper than std::pow), std::pow otherwise.
-inline double specularPower(double x, double s) {
+/// (Also in long double, for the overflow fallback of radiance_range.h.)
+template <class Real>
+Real specularPower(Real x, double s) {
     if (s >= 0 && s <= 1024 && s == std::floor(s)) {
         unsigned e = unsigned(s);
-        double result = 1, base = x;
+        Real result = 1, base = x;
         while (e) {
             if (e & 1u) result *= base;
             base *= base;
@@ -27,7 +31,7 @@ inline double specularPower(double x, double s) {
         }
         return result;
     }
-    return std::pow(x, s);
+    return std::pow(x, Real(s));
 }
 
 /// Blinn-Phong: ks · I · max(0, N·H)^s with H the unit half vector of L and V
@@ -37,7 +41,8 @@ inline Color blinnPhong(const Color& ks, double shininess, const Color& lightInt
     const Vec3 h = normalize(l + v);
     const double nh = dot(n, h);
     if (!(nh > 0)) return Color{};  // pow(0, s) = 0 for s > 0: skip the pow
-    return ks * lightIntensity * specularPower(nh, shininess);
+    return saturatedProduct(ks, lightIntensity, specularPower(nh, shininess),
+                            [&] { return specularPower<long double>(nh, shininess); });
 }
 
 /// Phong: ks · I · max(0, R·V)^s with R = 2(N·L)N − L, the mirror direction of
@@ -48,7 +53,8 @@ inline Color phong(const Color& ks, double shininess, const Color& lightIntensit
     const Vec3 r = n * (2 * dot(n, l)) - l;
     const double rv = dot(r, v);
     if (!(rv > 0)) return Color{};
-    return ks * lightIntensity * specularPower(rv, shininess);
+    return saturatedProduct(ks, lightIntensity, specularPower(rv, shininess),
+                            [&] { return specularPower<long double>(rv, shininess); });
 }
 
 }  // namespace raylab

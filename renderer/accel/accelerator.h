@@ -3,6 +3,7 @@
 // textbook loop over every object. Both answer from the same geometry/ math;
 // the integrator cannot tell them apart except by speed.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,14 @@
 
 namespace raylab {
 
+/// What an accelerator remembers about the last occluder of a shadow ray, for
+/// the next, similar one (the integrator's ShadowCache keeps one per light and
+/// depth). Opaque: its meaning is the accelerator's own.
+struct OcclusionHint {
+    static constexpr uint32_t kNone = 0xffffffffu;
+    uint32_t primitive = kNone;
+};
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
@@ -23,11 +32,25 @@ public:
     virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const = 0;
     /// Any hit with tMin < t < tMax (shadow feelers, opaque shadows).
     virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
+    /// occluded() with a hint: the accelerator may first ask the primitive the
+    /// hint names, and names the occluder it finds in it. The answer is
+    /// occluded()'s, whatever the hint holds. The default ignores the hint.
+    virtual bool occluded(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const {
+        (void)hint;
+        return occluded(ray, tMin, tMax);
+    }
     /// \brief What a shadow feeler carries from tMin to tMax (filtered shadows):
     ///   the product of the SurfaceFilter::transmission of every surface it
     ///   crosses, black at the first opaque one. Without transmitters in the
     ///   scene it is occluded() as black or white.
     virtual Color transmittance(const Ray& ray, double tMin, double tMax) const = 0;
+    /// transmittance() with a hint, as occluded() with one: the same answer
+    /// whatever the hint holds. The default ignores the hint.
+    virtual Color transmittance(const Ray& ray, double tMin, double tMax,
+                                OcclusionHint& hint) const {
+        (void)hint;
+        return transmittance(ray, tMin, tMax);
+    }
     /// "embree" or "naive".
     virtual std::string name() const = 0;
     /// Wall-clock seconds the constructor spent building the structure

@@ -1,6 +1,8 @@
 #include "renderer/accel/embree_accelerator.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "renderer/accel/embree_factory.h"
@@ -94,24 +96,50 @@ void EmbreeAccelerator::addTriangles(const Scene& scene, RTCBuildQuality quality
     }
 }
 
-bool EmbreeAccelerator::toEmbreeRay(const Ray& ray, double tMin, double tMax, RTCRay& out) const {
-    if (!(tMin < tMax)) return false;
-    const Vec3 o = ray.o - m_origin;
-    const Vec3f of{toFloat(o.x), toFloat(o.y), toFloat(o.z)};
-    const Vec3f df{toFloat(ray.d.x), toFloat(ray.d.y), toFloat(ray.d.z)};
-    // One test for everything: a NaN or infinite double, and one beyond
-    // float range, all convert to a non-finite float.
-    if (!isFinite(of) || !isFinite(df) || df == Vec3f{0, 0, 0}) return false;
+namespace {
 
-    out.org_x = of.x;
-    out.org_y = of.y;
-    out.org_z = of.z;
+/// The smallest double that float conversion (round to nearest even) turns
+/// into infinity: halfway between FLT_MAX and 2^128. Below it in magnitude a
+/// double converts to a finite float.
+constexpr double kFloatOverflow = 0x1.ffffffp127;
+
+/// Largest float <= t, for 0 < t <= FLT_MAX: the conversion rounds to
+/// nearest, and a result above t is stepped down one ulp (positive floats
+/// order like their bit patterns). Equals roundDown(t) without its library call.
+inline float floatBelow(double t) {
+    float f = static_cast<float>(t);
+    if (static_cast<double>(f) > t) {
+        uint32_t bits;
+        std::memcpy(&bits, &f, sizeof bits);
+        --bits;
+        std::memcpy(&f, &bits, sizeof f);
+    }
+    return f;
+}
+
+}  // namespace
+
+bool EmbreeAccelerator::toEmbreeRay(const Ray& ray, double tMin, double tMax, RTCRay& out) const {
+    // Every query pays for this conversion (the bare replay does not), so it
+    // is written to compile without branches but the one that rejects.
+    const double ox = ray.o.x - m_origin.x, oy = ray.o.y - m_origin.y, oz = ray.o.z - m_origin.z;
+    // One test for everything: a NaN or infinite double, and one beyond
+    // float range, would all convert to a non-finite float.
+    const bool inRange = (std::abs(ox) < kFloatOverflow) & (std::abs(oy) < kFloatOverflow) &
+                         (std::abs(oz) < kFloatOverflow) & (std::abs(ray.d.x) < kFloatOverflow) &
+                         (std::abs(ray.d.y) < kFloatOverflow) & (std::abs(ray.d.z) < kFloatOverflow);
+    if (!(inRange & (tMin < tMax))) return false;
+    out.org_x = static_cast<float>(ox);
+    out.org_y = static_cast<float>(oy);
+    out.org_z = static_cast<float>(oz);
+    out.dir_x = static_cast<float>(ray.d.x);
+    out.dir_y = static_cast<float>(ray.d.y);
+    out.dir_z = static_cast<float>(ray.d.z);
+    // A direction too short for float (or zero) cannot be traced.
+    if ((out.dir_x == 0.0f) & (out.dir_y == 0.0f) & (out.dir_z == 0.0f)) return false;
     // Rounded down so the float interval contains the double one; Embree
     // requires tnear >= 0.
-    out.tnear = tMin > 0 ? roundDown(std::min(tMin, static_cast<double>(FLT_MAX))) : 0.0f;
-    out.dir_x = df.x;
-    out.dir_y = df.y;
-    out.dir_z = df.z;
+    out.tnear = tMin > 0 ? floatBelow(std::min(tMin, static_cast<double>(FLT_MAX))) : 0.0f;
     out.time = 0;
     // Round-to-nearest is monotonic: t < tMax implies float(t) <= tfar, so the
     // user-geometry callbacks' float check never rejects a hit the double test took.
@@ -182,6 +210,31 @@ void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, dou
                                     double tMax) const {
     ctx.init(ray, tMin, tMax);
     if (m_filter.active()) ctx.filter = &m_filter;
+}
+
+bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
+                                 OcclusionHint& hint) const {
+    RTCRay r;
+    if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
+    if (hint.primitive != OcclusionHint::kNone) {
+        // Only unfiltered entries are named (occludedCallback): their exact
+        // test is the whole answer the callback would give.
+        const EmbreeUserTable::Entry& e = m_user.entries[hint.primitive];
+        if (e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options)) return true;
+    }
+    EmbreeQueryContext ctx;
+    initContext(ctx, &ray, tMin, tMax);
+    rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
+    // A lit point forgets the occluder: its neighbours are likely lit too,
+    // and a test of a primitive that does not block is wasted.
+    hint.primitive = r.tfar < 0.0f ? ctx.occluderEntry : OcclusionHint::kNone;
+    return r.tfar < 0.0f;
+}
+
+Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
+                                        OcclusionHint& hint) const {
+    if (!m_filter.active()) return occluded(ray, tMin, tMax, hint) ? Color{} : Color(1.0);
+    return transmittance(ray, tMin, tMax);
 }
 
 std::unique_ptr<Accelerator> makeEmbreeAccelerator(const Scene& scene,

@@ -40,7 +40,15 @@ public:
 
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    /// The hint names a user-geometry primitive (its entry in the table): its
+    /// exact Shape::occluded test is exactly what the callback would run for
+    /// it, so when it reports a hit, Embree would too (its padded box contains
+    /// the primitive) and the traversal is skipped.
+    bool occluded(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const override;
     Color transmittance(const Ray& ray, double tMin, double tMax) const override;
+    /// Without a surface filter, occluded() with the hint as black or white.
+    Color transmittance(const Ray& ray, double tMin, double tMax,
+                        OcclusionHint& hint) const override;
     std::string name() const override { return "embree"; }
     double buildSeconds() const override { return m_buildSeconds; }
     FilterCounts filterCounts() const override { return m_filter.counts(); }

@@ -134,7 +134,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
-    const EmbreeQueryContext& ctx = contextOf(args->context);
+    EmbreeQueryContext& ctx = contextOf(args->context);
     const unsigned n = args->N;
     RTCRayN* rays = args->ray;
     const EmbreeUserTable::Entry& e = table.entries[args->primID];
@@ -156,6 +156,8 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
             hit = exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
                         : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
                                             RTCRayN_tnear(rays, n, i), tfar, table.options);
+            // Named for the shadow cache: its exact test alone is the answer.
+            if (hit && exact) ctx.occluderEntry = args->primID;
         }
         if (hit) tfar = -kInfF;  // Embree's "occluded" marker
     }

@@ -43,6 +43,9 @@ struct EmbreeQueryContext {
     /// Set for a transmittance query: occlusion candidates on transmitters are
     /// collected here instead of ending the query.
     TransmittanceAccumulator* shadow = nullptr;
+    /// Occlusion queries: the entry whose exact test found the occluder, or
+    /// OcclusionHint::kNone (none yet, or a native triangle occluded).
+    uint32_t occluderEntry = 0xffffffffu;
 
     /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
     void init(const Ray* r, double tMinimum, double tMax) {
@@ -55,6 +58,7 @@ struct EmbreeQueryContext {
         exactHit = false;
         filter = nullptr;
         shadow = nullptr;
+        occluderEntry = 0xffffffffu;
     }
 };
 

@@ -22,7 +22,7 @@ constexpr long long kMaxPixels = 1LL << 28;
 /// pixel) when at least one of the channels exists; returns whether it did.
 /// Absent channels of a present layer are filled with `fill` by OpenEXR.
 bool addLayer(Imf::FrameBuffer& fb, const Imf::Header& header, const Imath::Box2i& dw,
-              std::vector<const char*> names, std::vector<float>& data, size_t pixels,
+              std::vector<const char*> names, FilmPlane& data, size_t pixels,
               double fill) {
     bool any = false;
     for (const char* name : names) any = any || header.channels().findChannel(name) != nullptr;

@@ -18,6 +18,7 @@
 
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/half_convert.h"
 
 namespace raylab {
 
@@ -25,13 +26,12 @@ namespace {
 
 using Imath::half;
 
-constexpr float kHalfMax = 65504.0f;  // largest finite half
 constexpr float kFloatMax = std::numeric_limits<float>::max();
 
-/// NaN -> 0, |v| > maxAbs -> ±maxAbs (this also turns ±Inf into ±maxAbs).
-float finiteClamp(float v, float maxAbs) {
+/// NaN -> 0, |v| > FLT_MAX -> ±FLT_MAX (that is, ±Inf).
+float finiteClamp(float v) {
     if (std::isnan(v)) return 0.f;
-    return v > maxAbs ? maxAbs : (v < -maxAbs ? -maxAbs : v);
+    return v > kFloatMax ? kFloatMax : (v < -kFloatMax ? -kFloatMax : v);
 }
 
 /// Checks that an AOV vector is either absent (empty) or holds `expected` values.
@@ -43,36 +43,62 @@ void checkLayerSize(const std::string& path, const char* name, size_t size, size
                              std::to_string(expected));
 }
 
-/// Copy of `src` (or `count` copies of `fallback` when src is empty), made
-/// safe for a FLOAT channel. With `isDepth`, +inf ("no hit") is kept and NaN
-/// also becomes +inf; everything else is kept finite.
-std::vector<float> floatPlane(const std::vector<float>& src, size_t count, float fallback,
-                              bool isDepth) {
+/// Whether v must change to be stored in a FLOAT channel: NaN, or an
+/// infinity other than the "no hit" +inf of a depth layer.
+bool needsFloatFix(float v, bool isDepth) {
+    return std::isnan(v) || (std::isinf(v) && !(isDepth && v > 0));
+}
+
+/// The values to write for a FLOAT layer: `src` itself when it is already safe
+/// (always, for a rendered film: this saves a copy of megabytes), else a safe
+/// copy in `storage` (NaN -> 0, or +inf for depth; ±inf clamped to ±FLT_MAX
+/// except depth's +inf), or `count` copies of `fallback` when src is empty.
+const float* floatPlane(const FilmPlane& src, size_t count, float fallback, bool isDepth,
+                        FilmPlane& storage) {
     constexpr float inf = std::numeric_limits<float>::infinity();
-    std::vector<float> out(count, fallback);
-    if (src.empty()) return out;
+    if (src.empty()) {
+        storage.assign(count, fallback);
+        return storage.data();
+    }
+    bool safe = true;
+    for (size_t i = 0; i < count && safe; ++i) safe = !needsFloatFix(src[i], isDepth);
+    if (safe) return src.data();
+    storage.resize(count);
     for (size_t i = 0; i < count; ++i) {
         const float v = src[i];
         if (isDepth && (v == inf || std::isnan(v)))
-            out[i] = inf;
+            storage[i] = inf;
         else
-            out[i] = finiteClamp(v, kFloatMax);
+            storage[i] = finiteClamp(v);
     }
+    return storage.data();
+}
+
+using HalfPlane = std::vector<half, HugePageAllocator<half>>;
+
+HalfPlane halfPlane(const FilmPlane& src, size_t count) {
+    HalfPlane out(count, half(0.f));
+    if (src.empty()) return out;
+    static_assert(sizeof(half) == sizeof(uint16_t), "half is 16 bits");
+    floatsToHalf(src.data(), reinterpret_cast<uint16_t*>(out.data()), count);
     return out;
 }
 
-std::vector<half> halfPlane(const std::vector<float>& src, size_t count) {
-    std::vector<half> out(count, half(0.f));
-    if (src.empty()) return out;
-    // Clamp first: Imath rounds to nearest, so anything above 65520 would become Inf.
-    for (size_t i = 0; i < count; ++i) out[i] = half(finiteClamp(src[i], kHalfMax));
-    return out;
+Imf::Compression toImf(ExrCompression c) {
+    switch (c) {
+        case ExrCompression::None: return Imf::NO_COMPRESSION;
+        case ExrCompression::Rle: return Imf::RLE_COMPRESSION;
+        case ExrCompression::Zips: return Imf::ZIPS_COMPRESSION;
+        case ExrCompression::Zip: return Imf::ZIP_COMPRESSION;
+        case ExrCompression::Piz: return Imf::PIZ_COMPRESSION;
+    }
+    return Imf::ZIP_COMPRESSION;
 }
 
 /// Slice wants a mutable char pointer even for output.
 template <class T>
-char* bytes(T* p) {
-    return reinterpret_cast<char*>(p);
+char* bytes(const T* p) {
+    return reinterpret_cast<char*>(const_cast<T*>(p));
 }
 
 /// The film's pixels in full-image coordinates.
@@ -106,25 +132,24 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     checkLayerSize(path, "albedo", film.albedo.size(), n * 3);
     checkLayerSize(path, "objectId", film.objectId.size(), n);
 
-    // Converted planes; interleaved layers keep the Film's layout and use strides.
+    // Planes to write; interleaved layers keep the Film's layout and use strides.
     const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
-    std::vector<float> rgbaF;
-    std::vector<half> rgbaH;
-    if (opts.floatPixels)
-        rgbaF = floatPlane(film.rgba, n * 4, 0.f, false);
-    else
-        rgbaH = halfPlane(film.rgba, n * 4);
-    std::vector<float> z =
-        floatPlane(film.depth, n, std::numeric_limits<float>::infinity(), true);
-    std::vector<float> normal = floatPlane(film.normal, n * 3, 0.f, false);
-    std::vector<half> albedo = halfPlane(film.albedo, n * 3);
-    std::vector<float> objectId = floatPlane(film.objectId, n, -1.f, false);
+    FilmPlane rgbaCopy, zCopy, normalCopy, objectIdCopy;
+    const float* rgbaF =
+        opts.floatPixels ? floatPlane(film.rgba, n * 4, 0.f, false, rgbaCopy) : nullptr;
+    HalfPlane rgbaH;
+    if (!opts.floatPixels) rgbaH = halfPlane(film.rgba, n * 4);
+    const float* z =
+        floatPlane(film.depth, n, std::numeric_limits<float>::infinity(), true, zCopy);
+    const float* normal = floatPlane(film.normal, n * 3, 0.f, false, normalCopy);
+    HalfPlane albedo = halfPlane(film.albedo, n * 3);
+    const float* objectId = floatPlane(film.objectId, n, -1.f, false, objectIdCopy);
 
     // A crop render is the data window inside the full image's display window.
     const Imath::Box2i dataWindow = exrDataWindow(film);
     Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
                        dataWindow);
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = toImf(opts.compression);
     header.insert("raylab/command", Imf::StringAttribute(opts.commandLine));
     header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
     header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
@@ -139,29 +164,29 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     for (int c = 0; c < 4; ++c) {
         channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
         if (opts.floatPixels)
-            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(rgbaF.data() + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(rgbaF + c),
                                                4 * sizeof(float), 4 * sizeof(float) * w));
         else
             fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF, bytes(rgbaH.data() + c),
                                                4 * sizeof(half), 4 * sizeof(half) * w));
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z", sliceIn(dataWindow, Imf::FLOAT, bytes(z.data()), sizeof(float), sizeof(float) * w));
+    fb.insert("Z", sliceIn(dataWindow, Imf::FLOAT, bytes(z), sizeof(float), sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
         channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(normal.data() + c),
+        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(normal + c),
                                              3 * sizeof(float), 3 * sizeof(float) * w));
         channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
         fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(albedo.data() + c),
                                              3 * sizeof(half), 3 * sizeof(half) * w));
     }
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId.data()), sizeof(float),
+    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId), sizeof(float),
                                      sizeof(float) * w));
 
-    // ZIP compression dominates the write; blocks are compressed in parallel
+    // Compression dominates the write; blocks are compressed in parallel
     // but always written in scan-line order, so the bytes stay deterministic.
     const int threads =
         opts.threads > 0 ? opts.threads : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -1,7 +1,8 @@
 #pragma once
 // OpenEXR output of a Film: the beauty pass plus the AOV layers.
 //
-// Channels (scan-line image, ZIP compression, row 0 = top of the image):
+// Channels (scan-line image, row 0 = top of the image, lossless compression
+// chosen in ExrOptions):
 //   R G B A                   HALF (FLOAT with ExrOptions::floatPixels)
 //   Z                         FLOAT, eye distance; +inf where nothing is hit
 //   N.X N.Y N.Z               FLOAT, world shading normal of the first hit
@@ -21,8 +22,16 @@
 
 namespace raylab {
 
+/// Lossless compressions of OpenEXR that `raylab render --compression` offers
+/// (docs/benchmarks.md measures each: CPU time, bytes).
+enum class ExrCompression { None, Rle, Zips, Zip, Piz };
+
+/// --compression names, in the enum's order.
+inline constexpr const char* kExrCompressionNames[] = {"none", "rle", "zips", "zip", "piz"};
+
 struct ExrOptions {
     bool floatPixels = false;  ///< RGBA as 32-bit FLOAT instead of HALF
+    ExrCompression compression = ExrCompression::Zip;
     std::string commandLine;   ///< the command that produced the image
     std::string scenePath;     ///< scene file rendered (omitted when empty)
     std::string accel;         ///< accelerator name (omitted when empty)

@@ -107,8 +107,8 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
 
 void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "the render settings",
-                       {"adaptive", "adaptive_levels", "min_weight", "seed", "precision", "epsilon",
-                        "bvh_quality", "robust", "accel", "shadows"});
+                       {"adaptive", "adaptive_levels", "min_weight", "seed", "max_rays", "precision",
+                        "epsilon", "bvh_quality", "robust", "accel", "shadows"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -122,6 +122,8 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     }
     if (const JsonValue* x = f.get("seed"))
         r.seed = uint64_t(integer(*x, f.path("seed"), 0, kMaxSeed));
+    if (const JsonValue* x = f.get("max_rays"))
+        r.maxRaysPerSample = uint64_t(integer(*x, f.path("max_rays"), 1, kMaxRaysPerSampleLimit));
     if (const JsonValue* x = f.get("precision"))
         r.precision = choice(*x, f.path("precision"), precisionNames());
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
@@ -213,6 +215,12 @@ Light SceneReader::readLight(const JsonValue& v, const std::string& path) {
     const double s =
         f.has("intensity") ? nonNegative(*f.get("intensity"), f.path("intensity")) : 1.0;
     light.intensity = c * s;
+    // Each factor is finite, their product need not be: refused here, where
+    // it is written, rather than rendered as an infinite light.
+    if (!light.intensity.isFinite())
+        fail(*f.get("intensity"), f.path("intensity"),
+             "color x intensity overflows a double (" + formatJsonNumber(c.maxComponent()) + " x " +
+                 formatJsonNumber(s) + "); the product must stay below 1.8e308");
     return light;
 }
 

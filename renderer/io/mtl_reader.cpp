@@ -145,6 +145,10 @@ private:
             if (count == maxCount)
                 fail(s.line, "'" + std::string(s.keyword) + "' takes at most " +
                                  std::to_string(maxCount) + " numbers");
+            // A finite double beyond the float range would become Inf here.
+            if (!std::isfinite(asFloat(*x)))
+                fail(s.line, "'" + std::string(s.keyword) + "': " + quotedToken(t) +
+                                 " is beyond float range (about 3.4e38)");
             out[count++] = asFloat(*x);
         }
         return count;

@@ -397,6 +397,9 @@ private:
                  std::to_string(m_entityLine);
         m.kd = c * kd;
         m.ka = c * kd;
+        if (!m.kd.isFinite())  // each factor is finite, their product need not be
+            failEntity("colour x Kd overflows a double (" + formatNumber(c.maxComponent()) + " x " +
+                       formatNumber(kd) + "); the product must stay below 1.8e308");
         m.ks = Color(ks);
         m.shininess = shine;
         m.highlight = Highlight::Phong;  // NFF's Shine is a Phong cosine power

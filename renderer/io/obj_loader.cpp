@@ -11,9 +11,13 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "geometry/validate.h"
+#include "renderer/huge_pages.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/load_warnings.h"
 #include "renderer/io/loading_file.h"
@@ -59,6 +63,20 @@ struct VertexKeyHash {
     }
 };
 
+/// A smoothing sum: one per position and group.
+struct SumKey {
+    uint32_t v;
+    uint64_t group;
+    bool operator==(const SumKey& o) const { return v == o.v && group == o.group; }
+};
+
+struct SumKeyHash {
+    size_t operator()(const SumKey& k) const {
+        const uint64_t h = (uint64_t(k.v) << 32) ^ (k.group * 0x9E3779B97F4A7C15ull);
+        return size_t(h ^ (h >> 29));
+    }
+};
+
 /// The interior angle of triangle (a, b, c) at a.
 double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 e1 = normalize(b - a), e2 = normalize(c - a);
@@ -67,27 +85,58 @@ double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 /// One mesh part: its vertices shared by VertexKey, and for smoothing groups
 /// the angle-weighted sum of face normals per (position, group).
+///
+/// Lookups go first through a table indexed by position (the first vertex,
+/// and the first sum, made from each position); only other keys of a
+/// position (a UV seam, a second group, file normals) reach a hash map. A
+/// mesh whose positions each make one vertex (a scan, a terrain) never
+/// hashes. The result is the one a single hash map gives: same vertices in
+/// the same order.
 class PartBuilder {
 public:
     PartBuilder() : m_part{"", std::make_shared<TriangleMesh>(), {}} {}
 
+    /// Room for what the part can hold at most (untouched pages cost no memory).
+    void reserve(size_t positions, size_t triangles) {
+        m_positionCount = positions;
+        TriangleMesh& m = mesh();
+        // Per-vertex arrays: one vertex per position is the common case.
+        reserveHugePages(m.positions, positions);
+        reserveHugePages(m.normals, positions);
+        reserveHugePages(m_keys, positions);
+        reserveHugePages(m_sumOf, positions);
+        reserveHugePages(m_sumGroup, positions);
+        reserveHugePages(m.triangles, triangles);
+        reserveHugePages(m_part.faceMaterials, triangles);
+    }
+
     uint32_t vertex(const ObjCorner& c, const NormalSource& n, const std::vector<Vec3>& world,
                     const ObjData& data, const Transform& xf) {
         const VertexKey key{c.v, c.vt, n.kind, n.id};
-        const auto [it, added] = m_vertexOf.emplace(key, uint32_t(mesh().positions.size()));
-        if (!added) return it->second;
+        if (m_firstVertex.empty()) resizeHugePages(m_firstVertex, m_positionCount, kNone);
+        uint32_t& first = m_firstVertex[c.v];
+        if (first != kNone && m_keys[first] == key) return first;
+        if (first != kNone) {
+            const auto [it, added] = m_otherVertices.emplace(key, uint32_t(mesh().positions.size()));
+            if (!added) return it->second;
+        } else {
+            first = uint32_t(mesh().positions.size());
+        }
+        const uint32_t index = uint32_t(mesh().positions.size());
+        m_keys.push_back(key);
         TriangleMesh& m = mesh();
         m.positions.push_back(world[c.v]);
         if (!data.colors.empty()) {
             const Vec3f& col = data.colors[c.v];
             m.colors.push_back(Vec3(col.x, col.y, col.z));
         }
-        if (c.vt >= 0) {
+        if (c.vt < 0) {
+            // Texture coordinates are kept only when every corner has one.
+            m_allUvs = false;
+            std::vector<Vec2>().swap(m.uvs);
+        } else if (m_allUvs) {
             const Vec2f& t = data.texcoords[size_t(c.vt)];
             m.uvs.push_back(Vec2(t.x, t.y));
-        } else {
-            m.uvs.push_back(Vec2(0, 0));
-            m_allUvs = false;
         }
         if (n.kind == NormalSource::File) {
             const Vec3f& f = data.normals[n.id];
@@ -96,51 +145,32 @@ public:
         } else if (n.kind == NormalSource::Group) {
             // One sum per position and group, shared by vertices that differ
             // only in their texture coordinate (a UV seam is not a crease).
-            const auto [s, fresh] =
-                m_groupSum.emplace((uint64_t(c.v) << 32) ^ n.id * 0x9E3779B97F4A7C15ull,
-                                   uint32_t(m_sums.size()));
-            if (fresh) m_sums.emplace_back();
             m.normals.push_back(Vec3{});
-            m_sumOf.push_back(s->second);
+            m_sumOf.push_back(sum(c.v, n.id));
         } else {
             m_sumOf.push_back(kNone);
         }
-        return it->second;
+        return index;
     }
 
-    /// Adds a triangle (already checked for area) with its material; a
-    /// smoothing-group triangle adds its normal, weighted by its angle at
-    /// each corner, to the corners' sums.
+    /// Adds a triangle (already checked for area) with its material.
     void triangle(const std::array<uint32_t, 3>& t, uint32_t material) {
-        TriangleMesh& m = mesh();
-        m.triangles.push_back(t);
+        mesh().triangles.push_back(t);
         m_part.faceMaterials.push_back(material);
-        if (m_sumOf[t[0]] == kNone) return;
-        const Vec3& p0 = m.positions[t[0]];
-        const Vec3& p1 = m.positions[t[1]];
-        const Vec3& p2 = m.positions[t[2]];
-        const Vec3 n = normalize(cross(p1 - p0, p2 - p0));
-        const double angle[3] = {cornerAngle(p0, p1, p2), cornerAngle(p1, p2, p0),
-                                 cornerAngle(p2, p0, p1)};
-        for (int k = 0; k < 3; ++k) {
-            Sum& s = m_sums[m_sumOf[t[size_t(k)]]];
-            s.normal += n * angle[k];
-            if (!s.first) s.first = n;
-        }
     }
 
-    /// The finished part: smoothing-group normals normalised (a sum that
-    /// cancels takes its first face's normal), texture coordinates kept only
-    /// when every corner had one.
+    /// The finished part: smoothing-group normals (below), texture
+    /// coordinates kept only when every corner had one.
     ObjMeshPart finish() {
-        TriangleMesh& m = mesh();
-        for (size_t i = 0; i < m_sumOf.size(); ++i) {
-            if (m_sumOf[i] == kNone) continue;
-            const Sum& s = m_sums[m_sumOf[i]];
-            const Vec3 n = normalize(s.normal);
-            m.normals[i] = isFinite(n) && lengthSquared(n) > 0 ? n : s.first.value_or(Vec3{});
-        }
-        if (!m_allUvs) m.uvs.clear();
+        // What only the vertex lookups needed.
+        std::vector<VertexKey>().swap(m_keys);
+        std::vector<uint32_t>().swap(m_firstVertex);
+        std::vector<uint32_t>().swap(m_firstSum);
+        std::vector<uint64_t>().swap(m_sumGroup);
+        decltype(m_otherVertices)().swap(m_otherVertices);
+        decltype(m_otherSums)().swap(m_otherSums);
+        if (m_sumCount > 0) smoothNormals();
+        if (!m_allUvs) mesh().uvs.clear();
         return std::move(m_part);
     }
 
@@ -149,18 +179,98 @@ public:
 
 private:
     static constexpr uint32_t kNone = UINT32_MAX;
-    struct Sum {
-        Vec3 normal{};
-        std::optional<Vec3> first;
-    };
     TriangleMesh& mesh() { return *m_part.mesh; }
 
+    Vec3 faceNormal(const std::array<uint32_t, 3>& t) const {
+        const TriangleMesh& m = *m_part.mesh;
+        return normalize(cross(m.positions[t[1]] - m.positions[t[0]],
+                               m.positions[t[2]] - m.positions[t[0]]));
+    }
+
+    /// Every smoothing sum is the angle-weighted sum of the normals of its
+    /// triangles, added in triangle order (corner order within one), then
+    /// normalised; a sum that cancels takes its first triangle's normal. The
+    /// sums are independent: each is added up on its own, in parallel, in
+    /// exactly the order a single pass over the triangles would add it, so
+    /// the normals are the same bits for any thread count.
+    void smoothNormals() {
+        TriangleMesh& m = mesh();
+        const auto& tris = m.triangles;
+        // Which (triangle, corner) each sum receives, grouped by sum, in order.
+        std::vector<uint32_t> start;
+        resizeHugePages(start, size_t(m_sumCount) + 1, 0u);
+        for (const auto& t : tris)
+            if (m_sumOf[t[0]] != kNone)
+                for (uint32_t v : t) ++start[m_sumOf[v] + 1];
+        for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+        std::vector<uint32_t> incident;
+        resizeHugePages(incident, size_t(start.back()));
+        {
+            std::vector<uint32_t> next;
+            reserveHugePages(next, start.size() - 1);
+            next.assign(start.begin(), start.end() - 1);
+            for (size_t ti = 0; ti < tris.size(); ++ti)
+                if (m_sumOf[tris[ti][0]] != kNone)
+                    for (uint32_t k = 0; k < 3; ++k)
+                        incident[next[m_sumOf[tris[ti][k]]]++] = uint32_t(ti * 3 + k);
+        }
+        std::vector<Vec3> normal;
+        resizeHugePages(normal, size_t(m_sumCount));
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_sumCount, 4096),
+                          [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t sIndex = r.begin(); sIndex != r.end(); ++sIndex) {
+                Vec3 sum{};
+                for (uint32_t j = start[sIndex]; j < start[sIndex + 1]; ++j) {
+                    const auto& t = tris[incident[j] / 3];
+                    const uint32_t k = incident[j] % 3;
+                    const Vec3& p0 = m.positions[t[0]];
+                    const Vec3& p1 = m.positions[t[1]];
+                    const Vec3& p2 = m.positions[t[2]];
+                    const Vec3 n = normalize(cross(p1 - p0, p2 - p0));
+                    const double angle = k == 0   ? cornerAngle(p0, p1, p2)
+                                         : k == 1 ? cornerAngle(p1, p2, p0)
+                                                  : cornerAngle(p2, p0, p1);
+                    sum += n * angle;
+                }
+                const Vec3 n = normalize(sum);
+                normal[sIndex] = isFinite(n) && lengthSquared(n) > 0 ? n
+                                 : start[sIndex] == start[sIndex + 1]
+                                     ? Vec3{}
+                                     : faceNormal(tris[incident[start[sIndex]] / 3]);
+            }
+        });
+        for (size_t i = 0; i < m_sumOf.size(); ++i)
+            if (m_sumOf[i] != kNone) m.normals[i] = normal[m_sumOf[i]];
+    }
+
+    /// The sum of (position v, group): made on first use.
+    uint32_t sum(uint32_t v, uint64_t group) {
+        if (m_firstSum.empty()) resizeHugePages(m_firstSum, m_positionCount, kNone);
+        uint32_t& first = m_firstSum[v];
+        if (first != kNone && m_sumGroup[first] == group) return first;
+        const uint32_t next = m_sumCount;
+        if (first != kNone) {
+            const auto [it, added] = m_otherSums.emplace(SumKey{v, group}, next);
+            if (!added) return it->second;
+        } else {
+            first = next;
+        }
+        ++m_sumCount;
+        m_sumGroup.push_back(group);
+        return next;
+    }
+
     ObjMeshPart m_part;
-    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> m_vertexOf;
+    size_t m_positionCount = 0;
+    std::vector<uint32_t> m_firstVertex;  ///< per position: its first vertex here, or kNone
+    std::vector<VertexKey> m_keys;        ///< per vertex
+    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> m_otherVertices;
     bool m_allUvs = true;
     std::vector<uint32_t> m_sumOf;  ///< per vertex: its smoothing sum, or kNone
-    std::vector<Sum> m_sums;
-    std::unordered_map<uint64_t, uint32_t> m_groupSum;
+    uint32_t m_sumCount = 0;
+    std::vector<uint64_t> m_sumGroup;       ///< per sum: its group
+    std::vector<uint32_t> m_firstSum;       ///< per position: its first sum, or kNone
+    std::unordered_map<SumKey, uint32_t, SumKeyHash> m_otherSums;
 };
 
 /// Line of the `index`-th (0-based) `v` statement: error messages only.
@@ -175,20 +285,26 @@ int lineOfVertex(const std::string& text, size_t index) {
 /// The positions with the transform applied; beyond float they could not be
 /// traced (and their areas would overflow into "zero-area" faces).
 std::vector<Vec3> worldPositions(const ObjData& data, const Transform& xf,
-                                 const std::string& path, const std::string& text) {
+                                 const std::string& path) {
     std::vector<Vec3> world;
-    world.reserve(data.positions.size());
+    resizeHugePages(world, data.positions.size());
     const double limit = double(std::numeric_limits<float>::max());
-    for (size_t i = 0; i < data.positions.size(); ++i) {
-        const Vec3f& p = data.positions[i];
-        const Vec3 w = xf.point(Vec3(p.x, p.y, p.z));
-        if (!isFinite(w) || maxComponent(abs(w)) > limit)
-            throw InputError(path, lineOfVertex(text, i),
+    std::vector<char> beyond(data.positions.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, world.size(), 16384),
+                      [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            const Vec3f& p = data.positions[i];
+            world[i] = xf.point(Vec3(p.x, p.y, p.z));
+            beyond[i] = !isFinite(world[i]) || maxComponent(abs(world[i])) > limit;
+        }
+    });
+    for (size_t i = 0; i < world.size(); ++i)  // the first one is reported
+        if (beyond[i])
+            // The text is gone by now (memory): read again for the message.
+            throw InputError(path, lineOfVertex(readTextFile(path), i),
                              "the mesh's transform (scale, rotate, translate) moves vertex " +
-                                 std::to_string(i + 1) + " to " + formatValue(w) +
+                                 std::to_string(i + 1) + " to " + formatValue(world[i]) +
                                  ", beyond float range (about 3.4e38)");
-        world.push_back(w);
-    }
     return world;
 }
 
@@ -199,8 +315,33 @@ public:
         : m_data(data), m_mats(mats), m_options(options), m_world(std::move(world)),
           m_warn(warn) {}
 
+    /// Plans every face in parallel (triangulation, self-crossing check,
+    /// which triangles have area), then builds the parts in one pass in face
+    /// order (shared vertices, materials, warnings), then the normals.
     void build() {
-        for (const ObjFace& f : m_data.faces) face(f);
+        // Each face's triangles go at a fixed place: a face of n corners has
+        // at most n - 2 (fewer when collinear corners are skipped).
+        std::vector<size_t> slot;
+        resizeHugePages(slot, m_data.faces.size() + 1, size_t(0));
+        for (size_t i = 0; i < m_data.faces.size(); ++i) {
+            const uint32_t n = m_data.faces[i].cornerCount;
+            slot[i + 1] = slot[i] + (n > 2 ? n - 2 : 0);
+        }
+        resizeHugePages(m_plans, m_data.faces.size());
+        resizeHugePages(m_planned, slot.back());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_data.faces.size(), 1024),
+                          [&](const tbb::blocked_range<size_t>& r) {
+            std::vector<Vec3> corners;
+            std::vector<std::array<uint32_t, 3>> triangles;
+            for (size_t i = r.begin(); i != r.end(); ++i)
+                plan(m_data.faces[i], corners, triangles, m_plans[i], &m_planned[slot[i]]);
+        });
+        m_smooth.reserve(m_data.positions.size(), slot.back());
+        m_flat.reserve(m_data.positions.size(), slot.back());
+        for (size_t i = 0; i < m_data.faces.size(); ++i)
+            face(m_data.faces[i], m_plans[i], &m_planned[slot[i]]);
+        std::vector<FacePlan>().swap(m_plans);
+        std::vector<PlannedTriangle>().swap(m_planned);
     }
 
     bool usesDefaultMaterial() const { return m_needDefault; }
@@ -212,9 +353,7 @@ public:
     }
 
 private:
-    const ObjCorner& corner(const ObjFace& f, size_t k) const {
-        return m_data.corners[f.firstCorner + k];
-    }
+    ObjCorner corner(const ObjFace& f, size_t k) const { return m_data.corner(f.firstCorner + k); }
 
     bool validNormal(int32_t vn) const {
         if (vn < 0) return false;
@@ -245,48 +384,89 @@ private:
         return uint32_t(m_mats.materials.size());  // the default, appended after the MTL ones
     }
 
-    void face(const ObjFace& f) {
+    /// What the parallel stage decides about a face.
+    struct FacePlan {
+        enum Kind : uint8_t { FewCorners, NoArea, Triangles } kind = FewCorners;
+        bool crossesItself = false;
+        uint32_t triangleCount = 0;
+    };
+    /// A triangle of a face's triangulation: corner numbers within the face,
+    /// and whether it has area (wound as it will be, see face()).
+    struct PlannedTriangle {
+        std::array<uint32_t, 3> corner;
+        bool hasArea;
+    };
+
+    /// Triangulates one face on the file's coordinates (an affine transform
+    /// changes no ear) and checks each triangle's area on the world positions.
+    void plan(const ObjFace& f, std::vector<Vec3>& corners,
+              std::vector<std::array<uint32_t, 3>>& triangles, FacePlan& out,
+              PlannedTriangle* planned) const {
         if (f.cornerCount < 3) {
+            out.kind = FacePlan::FewCorners;
+            return;
+        }
+        corners.clear();
+        for (size_t k = 0; k < f.cornerCount; ++k) {
+            const Vec3f& p = m_data.positions[m_data.cornerV[f.firstCorner + k]];
+            corners.push_back(Vec3(p.x, p.y, p.z));
+        }
+        try {
+            triangulateFace(corners, triangles);
+        } catch (const std::invalid_argument&) {
+            // Collinear or repeated corners, or a crossing outline with no net area.
+            out.kind = FacePlan::NoArea;
+            return;
+        }
+        out.kind = FacePlan::Triangles;
+        out.crossesItself = f.cornerCount > 3 && crossesItself(corners, triangles);
+        out.triangleCount = uint32_t(triangles.size());
+        const bool mirrored = m_options.transform.flipsHandedness();
+        for (size_t j = 0; j < triangles.size(); ++j) {
+            std::array<uint32_t, 3> t = triangles[j];
+            // As face() will wind it (see there).
+            if (mirrored) std::swap(t[1], t[2]);
+            const Vec3& p0 = m_world[m_data.cornerV[f.firstCorner + t[0]]];
+            const Vec3& p1 = m_world[m_data.cornerV[f.firstCorner + t[1]]];
+            const Vec3& p2 = m_world[m_data.cornerV[f.firstCorner + t[2]]];
+            const Vec3 area = cross(p1 - p0, p2 - p0);
+            // Zero-area triangles have no normal; Embree would never report them.
+            planned[j] = {triangles[j], lengthSquared(area) > 0 && isFinite(area)};
+        }
+    }
+
+    /// Adds a planned face to its part, with the warnings a face can give, in file order.
+    void face(const ObjFace& f, const FacePlan& plan, const PlannedTriangle* planned) {
+        if (plan.kind == FacePlan::FewCorners) {
             m_warn.add("face with fewer than 3 corners dropped", f.line, "", "dropped faces");
             return;
         }
-        m_corners.clear();
-        for (size_t k = 0; k < f.cornerCount; ++k) {
-            const Vec3f& p = m_data.positions[corner(f, k).v];
-            m_corners.push_back(Vec3(p.x, p.y, p.z));
-        }
-        std::vector<std::array<uint32_t, 3>> triangles;
-        try {
-            // On the file's coordinates: an affine transform changes no ear.
-            triangles = triangulateFace(m_corners);
-        } catch (const std::invalid_argument&) {
-            // Collinear or repeated corners, or a crossing outline with no net area.
+        if (plan.kind == FacePlan::NoArea) {
             m_warn.add("face encloses no area (collinear or repeated corners, or a crossing "
                        "outline whose parts cancel); dropped",
                        f.line, "", "dropped faces");
             return;
         }
-        if (f.cornerCount > 3) checkCoverage(f, triangles);
+        if (plan.crossesItself)
+            m_warn.add("face crosses itself: its triangles cover more than its area", f.line, "",
+                       "self-intersecting faces");
 
         const NormalSource normals = normalSource(f);
         PartBuilder& part = normals.kind == NormalSource::Flat ? m_flat : m_smooth;
         const uint32_t mat = material(f);
-        const bool mirrored = m_options.transform.flipsHandedness();
         size_t kept = 0;
-        for (const auto& t : triangles) {
+        for (uint32_t j = 0; j < plan.triangleCount; ++j) {
             std::array<uint32_t, 3> tri;
-            for (size_t j = 0; j < 3; ++j) {
-                const ObjCorner& c = corner(f, t[j]);
+            for (size_t k = 0; k < 3; ++k) {
+                const ObjCorner c = corner(f, planned[j].corner[k]);
                 NormalSource n = normals;
                 if (n.kind == NormalSource::File) n.id = uint64_t(c.vn);
-                tri[j] = part.vertex(c, n, m_world, m_data, m_options.transform);
+                // Every corner makes its vertex, also on a triangle without area.
+                tri[k] = part.vertex(c, n, m_world, m_data, m_options.transform);
             }
             // A mirroring transform reverses the winding; swap to keep the front side.
-            if (mirrored) std::swap(tri[1], tri[2]);
-            const Vec3 area = cross(part.position(tri[1]) - part.position(tri[0]),
-                                    part.position(tri[2]) - part.position(tri[0]));
-            // Zero-area triangles have no normal; Embree would never report them.
-            if (!(lengthSquared(area) > 0) || !isFinite(area)) continue;
+            if (m_options.transform.flipsHandedness()) std::swap(tri[1], tri[2]);
+            if (!planned[j].hasArea) continue;
             part.triangle(tri, mat);
             ++kept;
         }
@@ -296,16 +476,15 @@ private:
 
     /// A face whose triangles cover more than its own area crosses itself (or
     /// is strongly warped): its triangulation can only approximate it.
-    void checkCoverage(const ObjFace& f, const std::vector<std::array<uint32_t, 3>>& triangles) {
-        const Vec3 n = newellNormal(m_corners);
+    static bool crossesItself(const std::vector<Vec3>& corners,
+                              const std::vector<std::array<uint32_t, 3>>& triangles) {
+        const Vec3 n = newellNormal(corners);
         const Vec3 unit = normalize(n);
         double covered = 0;
         for (const auto& t : triangles)
-            covered += std::abs(dot(unit, cross(m_corners[t[1]] - m_corners[t[0]],
-                                                m_corners[t[2]] - m_corners[t[0]])));
-        if (covered > length(n) * (1 + 1e-6))
-            m_warn.add("face crosses itself: its triangles cover more than its area", f.line, "",
-                       "self-intersecting faces");
+            covered += std::abs(dot(unit, cross(corners[t[1]] - corners[t[0]],
+                                                corners[t[2]] - corners[t[0]])));
+        return covered > length(n) * (1 + 1e-6);
     }
 
     const ObjData& m_data;
@@ -314,7 +493,8 @@ private:
     std::vector<Vec3> m_world;
     LoadWarnings& m_warn;
     PartBuilder m_smooth, m_flat;
-    std::vector<Vec3> m_corners;  ///< the current face's corners (reused)
+    std::vector<FacePlan> m_plans;            ///< per face, while building
+    std::vector<PlannedTriangle> m_planned;   ///< per face, at its slot
     bool m_needDefault = false;
 };
 
@@ -322,16 +502,19 @@ private:
 
 ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
     const LoadingFile loading(path);  // names this file if the parse runs out of memory
-    const std::string text = readTextFile(path);
-    if (const auto [line, message] = findNonText(text, "OBJ"); line > 0)
-        throw InputError(path, line, message);
     LoadWarnings warn(path);
-    const ObjData data = parseObj(text, path, warn);
+    ObjData data;
+    {
+        // The text lives only while it is parsed: the mesh is built from the arrays.
+        const std::string text = readTextFile(path);
+        if (const auto [line, message] = findNonText(text, "OBJ"); line > 0)
+            throw InputError(path, line, message);
+        data = parseObj(text, path, warn);
+    }
     if (data.faces.empty()) throw InputError(path, 0, "the OBJ file has no faces");
     ObjMaterials mats = loadObjMaterials(data, path, warn);
 
-    MeshBuilder builder(data, mats, options, worldPositions(data, options.transform, path, text),
-                        warn);
+    MeshBuilder builder(data, mats, options, worldPositions(data, options.transform, path), warn);
     builder.build();
     ObjModel model;
     model.parts = builder.parts();

@@ -15,7 +15,9 @@ namespace {
 
 uint8_t encodeChannel(float c, double scale) {
     double v = double(c) * scale;
-    if (!std::isfinite(v)) return 0;  // defensive: NaN/Inf never reach a pixel
+    // NaN never reaches a pixel (defensive); an overflow (+Inf, e.g. after a
+    // huge exposure) is as white as any value above 1, never black.
+    if (std::isnan(v)) return 0;
     v = v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
     // Round half up; the argument is in [0.5, 255.5] so the cast is in range.
     return uint8_t(std::floor(linearToSrgb(v) * 255.0 + 0.5));

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "renderer/cancel.h"
+#include "renderer/huge_pages.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/input_files.h"
 
@@ -44,6 +45,7 @@ std::string readTextFile(const std::string& path, size_t maxBytes) {
 
     std::string text;
     text.reserve(size_t(st.st_size));
+    adviseHugePages(text.data(), text.capacity());  // a 60 MB OBJ: far fewer page faults
     char buffer[1 << 16];
     while (true) {
         throwIfCancelled();  // a 1 GiB file on a slow disk is a phase of its own

@@ -77,6 +77,41 @@ TEST_CASE("embree: the Embree ray is relative to the origin, masked, and bracket
     CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {1e-60, 0, 0}}, 0, kInf, r));
 }
 
+TEST_CASE("embree: the ray conversion's edge cases: float range, tnear rounding, NaN") {
+    const Scene scene = smallScene();
+    const EmbreeAccelerator accel(scene);
+    RTCRay r{};
+    // Origins and directions convert while they round to a finite float:
+    // FLT_MAX and anything below the midpoint to 2^128 do, the midpoint does not.
+    const double below = std::nextafter(0x1.ffffffp127, 0.0);
+    CHECK(accel.toEmbreeRay(Ray{{double(FLT_MAX), 0, 0}, {0, 0, 1}}, 0, kInf, r));
+    CHECK(r.org_x == FLT_MAX);
+    CHECK(accel.toEmbreeRay(Ray{{0, -below, 0}, {0, 0, 1}}, 0, kInf, r));
+    CHECK(r.org_y == -FLT_MAX);
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0x1.ffffffp127}, {0, 0, 1}}, 0, kInf, r));
+    CHECK(accel.toEmbreeRay(Ray{{0, 0, 0}, {0, below, 1}}, 0, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0}, {-0x1.ffffffp127, 0, 1}}, 0, kInf, r));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{nan, 0, 0}, {0, 0, 1}}, 0, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0}, {0, nan, 1}}, 0, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0}, {0, 0, 1}}, nan, kInf, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0}, {0, 0, 1}}, 0, nan, r));
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, kInf}, {0, 0, 1}}, 0, kInf, r));
+    // A direction whose components all underflow float is zero.
+    CHECK_FALSE(accel.toEmbreeRay(Ray{{0, 0, 0}, {1e-46, -1e-46, 1e-50}}, 0, kInf, r));
+    CHECK(accel.toEmbreeRay(Ray{{0, 0, 0}, {1e-46, -1e-46, 1e-30}}, 0, kInf, r));
+    // tnear: the largest float <= tMin, for values that are floats, that round
+    // up, that round down, subnormal and beyond float range.
+    for (double t : {0.1, 0.5, 1.0 / 3, 2.0 / 3, 1e-30, 1e-40, 1e-45, 3e38, 1e39, 1e300,
+                     double(FLT_MAX), std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0)}) {
+        CAPTURE(t);
+        REQUIRE(accel.toEmbreeRay(Ray{{0, 0, 0}, {0, 0, 1}}, t, kInf, r));
+        const double clamped = std::min(t, double(FLT_MAX));
+        CHECK(double(r.tnear) <= clamped);
+        CHECK(double(std::nextafter(r.tnear, std::numeric_limits<float>::infinity())) > clamped);
+    }
+}
+
 TEST_CASE("embree: camera-relative data keeps a tiny triangle far from the world origin") {
     // A triangle with 0.003-long legs at (1e5, 1e5, 1e5 - 10): a float ulp
     // there is 2^-7 = 0.0078, so in absolute float coordinates all three
@@ -353,4 +388,37 @@ TEST_CASE("embree: 8-wide packets and streams match single rays (callbacks handl
     CHECK(packetInvalidHit == 0);
     CHECK(packetDiffer == 0);
     CHECK(streamDiffer == 0);
+}
+
+TEST_CASE("embree: occlusion with a shadow-cache hint gives occluded()'s answer, hint or not") {
+    // 300 spheres (user geometry), a triangle sphere and terrain (native
+    // triangles), a ground plane: shadow segments between random points.
+    const Scene scene = randomScene(20, 300);
+    EmbreeAccelerator embree(scene, {});
+    NaiveAccelerator naive(scene, {});
+    Rng rng(7);
+    OcclusionHint carried;  // as the integrator carries it from one feeler to the next
+    int blocked = 0, named = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3 from = rng.point(-12, 12), to = rng.point(-12, 12);
+        const Ray ray{from, to - from};
+        const bool expected = embree.occluded(ray, 1e-9, 1.0);
+        CHECK(naive.occluded(ray, 1e-9, 1.0) == expected);
+        CHECK(embree.occluded(ray, 1e-9, 1.0, carried) == expected);
+        blocked += expected;
+        if (carried.primitive != OcclusionHint::kNone) {
+            ++named;
+            // A named occluder blocks this very segment.
+            OcclusionHint again = carried;
+            CHECK(embree.occluded(ray, 1e-9, 1.0, again));
+        }
+        if (!expected) CHECK(carried.primitive == OcclusionHint::kNone);
+        // Any entry as the hint, blocking or not: the same answer.
+        OcclusionHint any{uint32_t(rng.next() % 300)};
+        CHECK(embree.occluded(ray, 1e-9, 1.0, any) == expected);
+        CHECK((embree.transmittance(ray, 1e-9, 1.0, any).isBlack()) == expected);
+    }
+    CHECK(blocked > 1000);  // both answers well represented
+    CHECK(blocked < 3900);
+    CHECK(named > 100);     // and spheres named as occluders
 }

@@ -26,7 +26,7 @@ TEST_CASE("cli: --help describes the commands and exits 0") {
     const cli::Result rr = cli::run("render --help");
     CHECK(rr.exitCode == 0);
     for (const char* flag : {"--png", "--width", "--height", "--spp", "--depth", "--threads", "--accel",
-                             "--stats", "--quiet"})
+                             "--stats", "--quiet", "--compression"})
         CHECK_MESSAGE(rr.out.find(flag) != std::string::npos, flag);
 }
 
@@ -34,7 +34,8 @@ TEST_CASE("cli: usage errors exit 2 with one line") {
     for (const char* args : {"", "frobnicate", "render", "render scene.json", "render x.json -o",
                              "render x.json -o y.exr --width 0", "render x.json -o y.exr --width 1000000000",
                              "render x.json -o y.exr --spp abc", "render x.json -o y.exr --accel bvh4",
-                             "render x.json -o y.exr --bogus"}) {
+                             "render x.json -o y.exr --bogus", "render x.json -o y.exr --compression lzma",
+                             "render x.json -o y.exr --compression"}) {
         CAPTURE(args);
         const cli::Result r = cli::run(args);
         CHECK(r.exitCode == 2);
@@ -193,5 +194,23 @@ TEST_CASE("cli: bad camera overrides are usage errors, one line, exit 2") {
         CHECK(cli::lineCount(r.err) == 1);
         CHECK(r.err.rfind("raylab: error: ", 0) == 0);
         CHECK_FALSE(fs::exists(dir.file("o.exr")));
+    }
+}
+
+TEST_CASE("cli: --compression writes the same picture in every scheme") {
+    cli::TempDir dir;
+    const std::string scene = dir.write("tiny.json", kTinyScene);
+    std::string first;
+    for (const char* c : {"zip", "none", "rle", "zips", "piz"}) {
+        CAPTURE(c);
+        const std::string out = dir.file(std::string(c) + ".exr");
+        const cli::Result r = cli::run("render " + scene + " -o " + out + " --quiet --compression " + c);
+        REQUIRE(r.exitCode == 0);
+        if (first.empty()) {
+            first = out;
+            continue;
+        }
+        // raylab compare: exit 0 only for bit-identical RGBA.
+        CHECK(cli::run("compare " + first + " " + out).exitCode == 0);
     }
 }

@@ -26,7 +26,7 @@ const std::string kScene = R"({
 std::vector<const CommandFlags*> allCommands() {
     return {&raylab::kRenderFlags,      &raylab::kAccuracyFlags,    &raylab::kCompareFlags,
             &raylab::kBenchAccelFlags,  &raylab::kBenchLimitFlags,  &raylab::kBenchEffectsFlags,
-            &raylab::kBenchPrimitivesFlags};
+            &raylab::kBenchPrimitivesFlags, &raylab::kBenchIngestFlags};
 }
 
 }  // namespace

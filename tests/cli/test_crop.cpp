@@ -36,7 +36,7 @@ const std::string kScene = R"({
 /// Every layer of `crop` equals the same pixels of `full`, bit for bit.
 void checkSamePixels(const Film& full, const Film& crop) {
     REQUIRE(crop.width > 0);
-    const auto same = [](const std::vector<float>& a, size_t ia, const std::vector<float>& b,
+    const auto same = [](const raylab::FilmPlane& a, size_t ia, const raylab::FilmPlane& b,
                          size_t ib, size_t n) {
         return std::memcmp(&a[ia * n], &b[ib * n], n * sizeof(float)) == 0;
     };

@@ -37,7 +37,7 @@ inline std::unique_ptr<PreparedScene> prepare(const std::string& path,
 }
 
 /// Bitwise equality of two float layers (NaN payloads and -0 included).
-inline bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+inline bool sameBits(const FilmPlane& a, const FilmPlane& b) {
     return a.size() == b.size() &&
            (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }

@@ -10,28 +10,13 @@
 
 #include "distributed_test_helpers.h"
 #include "distributed/item_codec.h"
+#include "support/float_bits.h"
 
 using namespace raylab;
+using raylab::test::bitsOf;
+using raylab::test::floatFromBits;
 
 namespace {
-
-float fromBits(uint32_t bits) {
-    float f;
-    std::memcpy(&f, &bits, sizeof f);
-    return f;
-}
-
-uint32_t bitsOf(float f) {
-    uint32_t bits;
-    std::memcpy(&bits, &f, sizeof bits);
-    return bits;
-}
-
-uint64_t bitsOf(double d) {
-    uint64_t bits;
-    std::memcpy(&bits, &d, sizeof bits);
-    return bits;
-}
 
 /// Every float of the film gets its own bit pattern, with the awkward ones
 /// (a NaN with a payload, -0, the smallest subnormal, +inf) mixed in.
@@ -40,11 +25,11 @@ void fillDistinct(Film& f) {
     const auto next = [&k]() -> float {
         ++k;
         switch (k % 5) {
-            case 0: return fromBits(0x7fc01234u + k);        // quiet NaN, payload
-            case 1: return fromBits(0x80000000u);            // -0
-            case 2: return fromBits(0x00000001u + (k << 8));  // subnormal
+            case 0: return floatFromBits(0x7fc01234u + k);        // quiet NaN, payload
+            case 1: return floatFromBits(0x80000000u);            // -0
+            case 2: return floatFromBits(0x00000001u + (k << 8));  // subnormal
             case 3: return std::numeric_limits<float>::infinity();
-            default: return fromBits(0x3f800000u + k);       // 1 + k ulp
+            default: return floatFromBits(0x3f800000u + k);       // 1 + k ulp
         }
     };
     for (auto* layer : {&f.rgba, &f.depth, &f.normal, &f.albedo, &f.objectId})
@@ -106,31 +91,31 @@ TEST_CASE("ItemCodec: tiles travel bit for bit, other pixels stay untouched") {
     }
 }
 
-TEST_CASE("ItemCodec: SPD corner rows travel bit for bit") {
+TEST_CASE("ItemCodec: SPD corner rows and their pixel row's AOV layers travel bit for bit") {
     const auto p = smallScene(true);
     const FrameRenderer frame(p->scene, *p->accel, p->options, p->effects);
     // SPD mode: one item per row of corners, 21 rows of 41 corners.
     REQUIRE(frame.workItemCount() == 21);
     const ItemCodec codec(frame, p->options);
-    // A corner: 3 + 3 + 3 doubles, a hit byte, two floats = 72 + 1 + 8 = 81 bytes.
-    CHECK(codec.itemBytes(3) == 4 + 41 * 81);
+    // A corner: 3 doubles and a hit byte (25 bytes); corner row y < 20 also
+    // carries pixel row y's AOV layers (8 floats per pixel); the last one none.
+    CHECK(codec.itemBytes(3) == 4 + 41 * 25 + 40 * 32);
+    CHECK(codec.itemBytes(20) == 4 + 41 * 25);
 
     FrameBuffers from = frame.makeBuffers();
     REQUIRE(from.corners.size() == size_t(41) * 21);
     for (size_t i = 0; i < from.corners.size(); ++i) {
-        Sample& s = from.corners[i];
+        CornerSample& s = from.corners[i];
         const double d = double(i);
         s.c = Color(d + 0.1, -d, std::nextafter(d, 1e9));
-        s.first.hit = i % 2 == 1;
-        s.first.distance = float(d) * 0.5f;
-        s.first.normal = Vec3(0, -0.0, d * 1e-310);  // -0 and a subnormal double
-        s.first.albedo = Color(1.0 / (d + 3), 2, 3);
-        s.first.objectId = float(i % 7);
+        s.hit = i % 2 == 1;
     }
+    fillDistinct(from.film);
     std::vector<unsigned char> msg;
     codec.append(20, from, msg);
     codec.append(3, from, msg);
     FrameBuffers to = frame.makeBuffers();
+    const FrameBuffers untouched = frame.makeBuffers();
     std::vector<int> items;
     ByteReader in(msg.data(), msg.size());
     codec.extract(in, to, items);
@@ -138,17 +123,28 @@ TEST_CASE("ItemCodec: SPD corner rows travel bit for bit") {
     for (int row = 0; row < 21; ++row) {
         for (int x = 0; x < 41; ++x) {
             const size_t i = size_t(row) * 41 + size_t(x);
-            const Sample& a = to.corners[i];
-            const Sample& b = (row == 3 || row == 20) ? from.corners[i] : Sample{};
+            const CornerSample& a = to.corners[i];
+            const CornerSample& b = (row == 3 || row == 20) ? from.corners[i] : untouched.corners[i];
             REQUIRE(bitsOf(a.c.r) == bitsOf(b.c.r));
             REQUIRE(bitsOf(a.c.g) == bitsOf(b.c.g));
             REQUIRE(bitsOf(a.c.b) == bitsOf(b.c.b));
-            REQUIRE(a.first.hit == b.first.hit);
-            REQUIRE(bitsOf(a.first.distance) == bitsOf(b.first.distance));
-            REQUIRE(bitsOf(a.first.normal.y) == bitsOf(b.first.normal.y));
-            REQUIRE(bitsOf(a.first.normal.z) == bitsOf(b.first.normal.z));
-            REQUIRE(bitsOf(a.first.albedo.r) == bitsOf(b.first.albedo.r));
-            REQUIRE(bitsOf(a.first.objectId) == bitsOf(b.first.objectId));
+            REQUIRE(a.hit == b.hit);
+        }
+    }
+    // The AOV layers of pixel row 3 arrived; RGBA is made later from the
+    // corners (finishRow), so it stays as it was, like every other row.
+    for (int y = 0; y < 20; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            const size_t i = to.film.index(x, y);
+            const Film& aovs = y == 3 ? from.film : untouched.film;
+            for (int c = 0; c < 3; ++c) {
+                REQUIRE(bitsOf(to.film.normal[3 * i + c]) == bitsOf(aovs.normal[3 * i + c]));
+                REQUIRE(bitsOf(to.film.albedo[3 * i + c]) == bitsOf(aovs.albedo[3 * i + c]));
+            }
+            REQUIRE(bitsOf(to.film.depth[i]) == bitsOf(aovs.depth[i]));
+            REQUIRE(bitsOf(to.film.objectId[i]) == bitsOf(aovs.objectId[i]));
+            for (int c = 0; c < 4; ++c)
+                REQUIRE(bitsOf(to.film.rgba[4 * i + c]) == bitsOf(untouched.film.rgba[4 * i + c]));
         }
     }
 }
@@ -184,13 +180,34 @@ TEST_CASE("appendCounters / readCounters: every counter round-trips") {
         for (uint64_t& n : perType) n = (k++) * 0x9E3779B97F4A7C15ULL;  // distinct, large
     c.rays.cameraHits = 12345678901234ULL;
     c.nonFinite = 7;
+    c.cappedSamples = 9;
+    c.maxSampleRays = 65538;
     std::vector<unsigned char> bytes;
     appendCounters(c, bytes);
-    // 4 ray types x 65 depths + camera hits + non-finite, 8 bytes each.
-    CHECK(bytes.size() == (4 * 65 + 2) * 8);
+    // 4 ray types x 65 depths + camera hits, non-finite, capped, most rays: 8 bytes each.
+    CHECK(bytes.size() == (4 * 65 + 4) * 8);
     ByteReader in(bytes.data(), bytes.size());
     const WorkCounters back = readCounters(in);
     CHECK(in.done());
     CHECK(test::sameCounters(back.rays, c.rays));
     CHECK(back.nonFinite == 7);
+    CHECK(back.cappedSamples == 9);
+    CHECK(back.maxSampleRays == 65538);
+}
+
+TEST_CASE("WorkCounters +=: sums, and the largest sample") {
+    WorkCounters a, b;
+    a.nonFinite = 1;
+    a.cappedSamples = 2;
+    a.maxSampleRays = 70;
+    a.rays.cameraHits = 5;
+    b.nonFinite = 10;
+    b.cappedSamples = 20;
+    b.maxSampleRays = 30;
+    b.rays.cameraHits = 6;
+    a += b;
+    CHECK(a.nonFinite == 11);
+    CHECK(a.cappedSamples == 22);
+    CHECK(a.maxSampleRays == 70);
+    CHECK(a.rays.cameraHits == 11);
 }

@@ -85,6 +85,7 @@ TEST_CASE("renderIdentity: every option that changes pixels is in the settings")
         {"adaptive", [](RenderOptions& o) { o.adaptiveThreshold = 0.1; }},
         {"adaptive_levels", [](RenderOptions& o) { o.adaptiveMaxLevel = 3; }},
         {"seed", [](RenderOptions& o) { o.seed = 5; }},
+        {"max_rays", [](RenderOptions& o) { o.maxRaysPerSample = 100; }},
         {"accel", [](RenderOptions& o) { o.accel = AcceleratorKind::Naive; }},
         {"shadows", [](RenderOptions& o) { o.shadows = ShadowMode::Opaque; }},
         {"bvh_quality",

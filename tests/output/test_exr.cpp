@@ -228,7 +228,7 @@ TEST_CASE("exr: reader fills missing channels (A = 1, absent layers empty)") {
     const Film f = readExr(path);
     CHECK(f.width == 2);
     CHECK(f.height == 1);
-    CHECK(f.rgba == std::vector<float>{0.25f, 0.5f, 0.75f, 1.f, 1.f, 2.f, 3.f, 1.f});
+    CHECK(f.rgba == FilmPlane{0.25f, 0.5f, 0.75f, 1.f, 1.f, 2.f, 3.f, 1.f});
     CHECK(f.depth.empty());
     CHECK(f.normal.empty());
     CHECK(f.albedo.empty());
@@ -302,8 +302,70 @@ TEST_CASE("exr: empty AOV vectors are written as the Film defaults") {
     CHECK(channelTypes(dir.file("rgba.exr")).size() == 12);
     const Film back = readExr(dir.file("rgba.exr"));
     CHECK(back.rgba == f.rgba);  // all four values are exact in half
-    CHECK(back.depth == std::vector<float>{kInf, kInf});
-    CHECK(back.normal == std::vector<float>(6, 0.f));
-    CHECK(back.albedo == std::vector<float>(6, 0.f));
-    CHECK(back.objectId == std::vector<float>{-1.f, -1.f});
+    CHECK(back.depth == FilmPlane{kInf, kInf});
+    CHECK(back.normal == FilmPlane(6, 0.f));
+    CHECK(back.albedo == FilmPlane(6, 0.f));
+    CHECK(back.objectId == FilmPlane{-1.f, -1.f});
+}
+
+TEST_CASE("exr: every lossless compression stores the same values, and says which it used") {
+    TempDir dir;
+    // Large enough for several blocks of every scheme, with runs (for RLE),
+    // smooth gradients and a background region.
+    Film f(70, 40);
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 70; ++x) {
+            const size_t i = f.index(x, y);
+            for (int c = 0; c < 4; ++c) f.rgba[4 * i + c] = x < 20 ? 0.5f : float(x * y + c) / 97.f;
+            if (y < 30) {
+                f.depth[i] = 1.f + float(x) / 3.f;
+                for (int c = 0; c < 3; ++c) {
+                    f.normal[3 * i + c] = float(c) - 0.25f * float(y % 5);
+                    f.albedo[3 * i + c] = float((x + c) % 7) / 7.f;
+                }
+                f.objectId[i] = float(x / 10);
+            }
+        }
+    ExrOptions o = makeOptions(false);
+    o.compression = ExrCompression::Zip;
+    writeExr(dir.file("zip.exr"), f, o);
+    const Film reference = readExr(dir.file("zip.exr"));
+    const Imf::Compression imf[] = {Imf::NO_COMPRESSION, Imf::RLE_COMPRESSION,
+                                    Imf::ZIPS_COMPRESSION, Imf::ZIP_COMPRESSION,
+                                    Imf::PIZ_COMPRESSION};
+    for (size_t k = 0; k < std::size(kExrCompressionNames); ++k) {
+        CAPTURE(kExrCompressionNames[k]);
+        const std::string path = dir.file(std::string(kExrCompressionNames[k]) + ".exr");
+        o.compression = ExrCompression(k);
+        writeExr(path, f, o);
+        CHECK(Imf::InputFile(path.c_str()).header().compression() == imf[k]);
+        const Film back = readExr(path);
+        CHECK(back.rgba == reference.rgba);
+        CHECK(back.depth == reference.depth);
+        CHECK(back.normal == reference.normal);
+        CHECK(back.albedo == reference.albedo);
+        CHECK(back.objectId == reference.objectId);
+    }
+    // Compression does something: the uncompressed file is the largest.
+    CHECK(raylab::test::readFile(dir.file("none.exr")).size() >
+          raylab::test::readFile(dir.file("zip.exr")).size());
+}
+
+TEST_CASE("exr: a rendered film's FLOAT layers are written from the film as they are") {
+    // The writer skips its safe copy when no value needs fixing; the bytes
+    // must be exactly those of the values, -0 and denormals included.
+    TempDir dir;
+    Film f(4, 1);
+    f.depth = {0.f, -0.f, 1e-40f, kInf};
+    f.normal = {1.f, -0.f, 1e-42f, 0.f, 0.f, 0.f, 0.5f, 0.25f, 0.125f, 3.f, 2.f, 1.f};
+    f.objectId = {-1.f, 0.f, 1.f, 16777216.f};
+    writeExr(dir.file("a.exr"), f, makeOptions(false));
+    const Film back = readExr(dir.file("a.exr"));
+    CHECK(std::memcmp(back.depth.data(), f.depth.data(), 4 * sizeof(float)) == 0);
+    CHECK(std::memcmp(back.normal.data(), f.normal.data(), 12 * sizeof(float)) == 0);
+    CHECK(std::memcmp(back.objectId.data(), f.objectId.data(), 4 * sizeof(float)) == 0);
+    // And a -inf depth (never rendered) is clamped like any other infinity.
+    f.depth[0] = -kInf;
+    writeExr(dir.file("b.exr"), f, makeOptions(false));
+    CHECK(readExr(dir.file("b.exr")).depth[0] == -std::numeric_limits<float>::max());
 }

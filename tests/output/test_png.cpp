@@ -72,11 +72,13 @@ TEST_CASE("png: exposure, clamping and non-finite input") {
     CHECK(toneMapSrgb8(2.f, 1e30f, 1.0001f, 0) == grey(255));
     CHECK(toneMapSrgb8(0.6f, 0.6f, 0.6f, 1) == grey(255));
     CHECK(toneMapSrgb8(-1.f, -0.f, -1e-30f, 0) == grey(0));
-    // Non-finite -> 0; also a finite value that overflows after scaling.
+    // NaN -> 0; an overflow is white, never black (issue 22: an overflow must
+    // not be hidden as black): +Inf, and a finite value that overflows after
+    // scaling, clamp like any value above 1; -Inf like any negative one.
     const float inf = std::numeric_limits<float>::infinity();
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    CHECK(toneMapSrgb8(nan, inf, -inf, 0) == grey(0));
-    CHECK(toneMapSrgb8(3e38f, 0.5f, 0.5f, 1e4)[0] == 0);
+    CHECK(toneMapSrgb8(nan, inf, -inf, 0) == std::array<uint8_t, 3>{0, 255, 0});
+    CHECK(toneMapSrgb8(3e38f, 0.5f, 0.5f, 1e4)[0] == 255);
 }
 
 TEST_CASE("png: file has the PNG signature, IHDR size and the tone-mapped pixels") {

@@ -31,6 +31,11 @@ RenderStats makeStats() {
     s.spp = 4;
     s.maxDepth = 5;
     s.nonFiniteSamples = 2;
+    s.maxRaysPerSample = 65536;
+    s.cappedSamples = 3;
+    s.maxSampleRays = 65538;
+    s.filter.cutOut = 11;
+    s.filter.attenuated = 12;
     return s;
 }
 
@@ -72,9 +77,14 @@ TEST_CASE("render stats: the whole JSON document") {
     "max_depth": 5
   },
   "non_finite_samples": 2,
+  "ray_cap": {
+    "rays_per_sample": 65536,
+    "capped_samples": 3,
+    "most_rays_in_a_sample": 65538
+  },
   "surface_filter": {
-    "cut_out_candidates": 0,
-    "attenuating_crossings": 0
+    "cut_out_candidates": 11,
+    "attenuating_crossings": 12
   }
 }
 )";
@@ -88,7 +98,8 @@ TEST_CASE("render stats: every key is present, also for an empty render") {
           "\"by_depth\"", "\"camera_hits\"", "\"time_s\"", "\"parse\"", "\"build\"", "\"render\"",
           "\"write\"", "\"mrays_per_s\"", "\"primitives\"", "\"effects\": []", "\"threads\"",
           "\"accel\": \"\"", "\"image\"", "\"width\"", "\"height\"", "\"spp\"",
-          "\"max_depth\"", "\"non_finite_samples\""}) {
+          "\"max_depth\"", "\"non_finite_samples\"", "\"ray_cap\"", "\"rays_per_sample\"",
+          "\"capped_samples\"", "\"most_rays_in_a_sample\"", "\"surface_filter\""}) {
         CAPTURE(key);
         CHECK(json.find(key) != std::string::npos);
     }

@@ -34,6 +34,20 @@ inline const std::string kSphereScene =
     " \"lights\": [{\"type\": \"point\", \"position\": [2, 3, 4]}],\n"
     " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
 
+/// Issue 22's deep tree: a glass sphere inside a mirror sphere, 4x4 pixels at
+/// depth 64, weights that never fall to zero. The ray tree doubles at every
+/// level: only the per-sample ray cap ends it (test_ray_cap.cpp), and only a
+/// stop check inside the tree interrupts it promptly (test_signals.cpp).
+inline const std::string kGlassInMirrorScene =
+    "{\"image\": {\"width\": 4, \"height\": 4, \"depth\": 64},\n"
+    " \"camera\": {\"eye\": [0, 0, 0.5], \"look_at\": [0, 0, -1], \"fov\": 30},\n"
+    " \"lights\": [{\"type\": \"point\", \"position\": [0.2, 0.3, 0.4]}],\n"
+    " \"materials\": {\"mirror\": {\"kd\": 0.05, \"km\": 0.9},\n"
+    "               \"glass\": {\"kd\": 0, \"km\": 0.1, \"kt\": 0.9, \"ior\": 1.5}},\n"
+    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 3, \"material\": \"mirror\",\n"
+    "               \"sides\": \"inside\"},\n"
+    "              {\"type\": \"sphere\", \"center\": [0, 0, -1], \"radius\": 0.5, \"material\": \"glass\"}]}\n";
+
 /// The lines of `text` without their '\n' (a last line without one counts).
 inline std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> out;

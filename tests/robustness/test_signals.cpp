@@ -144,18 +144,6 @@ const std::string kSmallScene =
     "                                   {\"frame\": 3, \"eye\": [1, 0, 5], \"look_at\": [0, 0, 0]}]},\n"
     " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]}\n";
 
-/// A glass sphere inside a mirror sphere: the ray tree doubles at every level,
-/// so at depth 60 one pixel takes longer than any test may wait.
-const std::string kDeepScene =
-    "{\"image\": {\"width\": 4, \"height\": 4, \"depth\": 60},\n"
-    " \"camera\": {\"eye\": [0, 0, 0.5], \"look_at\": [0, 0, -1], \"fov\": 30},\n"
-    " \"lights\": [{\"type\": \"point\", \"position\": [0.2, 0.3, 0.4]}],\n"
-    " \"materials\": {\"mirror\": {\"kd\": 0.05, \"km\": 0.9},\n"
-    "               \"glass\": {\"kd\": 0, \"km\": 0.1, \"kt\": 0.9, \"ior\": 1.5}},\n"
-    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 3, \"material\": \"mirror\",\n"
-    "               \"sides\": \"inside\"},\n"
-    "              {\"type\": \"sphere\", \"center\": [0, 0, -1], \"radius\": 0.5, \"material\": \"glass\"}]}\n";
-
 /// A height-field OBJ of 2·n² triangles: seconds to parse and to build a BVH for.
 std::string gridObj(int n) {
     std::string s;
@@ -182,8 +170,10 @@ const char* signalName(int sig) {
 /// signal is sent only once it runs again (it lands inside the phase's work).
 /// Returns the exit code (-1: it did not end within 60 s).
 int signalInPhase(const TempDir& dir, const std::vector<std::string>& args,
-                  const std::string& phase, int sig, bool afterContinue = false) {
-    Process p(args, dir.file("stdout"), dir.file("stderr"), 0, {"RAYLAB_TEST_STOP_AT=" + phase});
+                  const std::string& phase, int sig, bool afterContinue = false,
+                  std::vector<std::string> env = {}) {
+    env.push_back("RAYLAB_TEST_STOP_AT=" + phase);
+    Process p(args, dir.file("stdout"), dir.file("stderr"), 0, env);
     REQUIRE(p.started());
     REQUIRE(p.waitUntilStopped());
     if (!afterContinue) p.signal(sig);
@@ -263,7 +253,7 @@ TEST_CASE("signals: a signal inside a long parse, BVH build or deep ray tree end
     // whichever check point or the watchdog ends it, the contract is the same.
     TempDir dir;
     const std::string obj = dir.write("grid.obj", gridObj(230));
-    const std::string deep = dir.write("deep.json", kDeepScene);
+    const std::string deep = dir.write("deep.json", kGlassInMirrorScene);
     struct Case {
         const char* phase;
         std::vector<std::string> args;
@@ -273,13 +263,20 @@ TEST_CASE("signals: a signal inside a long parse, BVH build or deep ray tree end
                    "--spp", "64", "--quiet"}},
         {"build", {"render", obj, "-o", dir.file("out.exr"), "--bvh-quality", "high", "--width",
                    "1024", "--height", "1024", "--spp", "64", "--quiet"}},
-        {"render", {"render", deep, "-o", dir.file("out.exr"), "--threads", "1", "--quiet"}},
+        // Depth 64 and the largest ray cap: without the check inside the ray
+        // tree one sample would run for hours; without the watchdog only that
+        // check can end it.
+        {"render", {"render", deep, "-o", dir.file("out.exr"), "--threads", "1", "--quiet",
+                    "--max-rays", "1099511627776"}},
     };
     for (const Case& c : cases) {
         for (const int sig : {SIGINT, SIGTERM}) {
             CAPTURE(c.phase);
             CAPTURE(signalName(sig));
-            const int code = signalInPhase(dir, c.args, c.phase, sig, true);
+            const std::vector<std::string> env =
+                c.phase == std::string("render") ? std::vector<std::string>{"RAYLAB_TEST_NO_WATCHDOG=1"}
+                                                 : std::vector<std::string>{};
+            const int code = signalInPhase(dir, c.args, c.phase, sig, true, env);
             CHECK(code == 128 + sig);
             checkOneLine(dir, std::string("raylab: interrupted by ") + signalName(sig) +
                                   ": no output written");

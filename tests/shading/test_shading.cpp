@@ -2,6 +2,7 @@
 // hand-computed values.
 #include <doctest/doctest.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "shading/brdf.h"
@@ -109,4 +110,41 @@ TEST_CASE("specularPower: whole exponents by squaring, the rest through pow") {
     CHECK(specularPower(0.5, 10) == 1.0 / 1024);
     CHECK(specularPower(0.9, 37) == doctest::Approx(std::pow(0.9, 37)).epsilon(1e-14));
     CHECK(specularPower(0.9, 2.5) == std::pow(0.9, 2.5));
+}
+
+TEST_CASE("radiance overflow: saturates at the largest double, never Inf, NaN or black") {
+    const Vec3 n{0, 0, 1};
+    // Lambert, cos 1: 1.7e308 * 1 fits; * 10 overflows and saturates.
+    CHECK(lambert(Color(1), Color(1.7e308), n, n).r == 1.7e308);
+    CHECK(lambert(Color(10), Color(1.7e308), n, n).r == DBL_MAX);
+    // kd * I overflows a double, the cosine 0.5 brings it back into range:
+    // 1e200 * 1e200 * 0.5 = 5e399 -> the largest double (not Inf).
+    const Vec3 l60 = normalize(Vec3{std::sqrt(3.0), 0, 1});  // cos = 0.5
+    CHECK(lambert(Color(1e200), Color(1e200), n, l60).r == DBL_MAX);
+    // Blinn-Phong at the peak with s = 100 and N.H = 0.1 would be 0.1^100 =
+    // 1e-100: ks * I = 1e200 * 1e200 overflows first, then the product is
+    // exactly representable: 1e300 (long double path, within rounding).
+    const Vec3 v{0, 0, 1};
+    // H = normalize(l + v) with N.H = 0.1: pick l so that the half vector is at
+    // N.H = 0.1 and check against the plain formula in long double.
+    const Vec3 h = normalize(Vec3{std::sqrt(1 - 0.01), 0, 0.1});
+    const Vec3 l = normalize(h * (2 * dot(h, v)) - v);
+    const double nh = dot(n, normalize(l + v));
+    const long double expected = 1e200L * 1e200L * std::pow((long double)nh, 100.0L);
+    const Color c = blinnPhong(Color(1e200), 100, Color(1e200), n, l, v);
+    CHECK(std::isfinite(c.r));
+    CHECK(c.r == doctest::Approx(double(expected)).epsilon(1e-12));
+    CHECK(c.r > 1e299);
+    // Where the factor underflows a double (0.01^200 = 1e-400 -> 0) while
+    // ks * I overflows (1e600), the plain product is Inf * 0 = NaN; the wide
+    // path gives the true 1e200, not black.
+    CHECK(std::isnan(1e300 * 1e300 * specularPower(0.01, 200)));
+    const Color w = saturatedProduct(Color(1e300), Color(1e300), specularPower(0.01, 200),
+                                     [] { return specularPower<long double>(0.01L, 200); });
+    CHECK(w.r == doctest::Approx(1e200).epsilon(1e-9));
+    // A genuine zero stays zero; finite products are the plain ones, bit for bit.
+    CHECK(saturatedProduct(Color(0), Color(1e308), 2.0, [] { return 2.0L; }).r == 0);
+    CHECK(saturatedProduct(Color(0.3), Color(0.7), 0.9, [] { return 0.9L; }).r == 0.3 * 0.7 * 0.9);
+    CHECK(saturated(Color(INFINITY, -INFINITY, 1)) == Color(DBL_MAX, -DBL_MAX, 1));
+    CHECK(std::isnan(saturated(NAN)));
 }

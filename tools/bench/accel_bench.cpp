@@ -105,7 +105,8 @@ double renderPixelSample(const Scene& scene, const Accelerator& accel,
                                   const int y = int(pixel / size_t(options.width));
                                   const Ray ray = scene.camera.generateRay(
                                       x + 0.5, y + 0.5, options.width, options.height);
-                                  integrator.Li(ray, c, nullptr);
+                                  SampleRays spent;
+                                  integrator.Li(ray, c, nullptr, spent);
                               }
                           });
     });

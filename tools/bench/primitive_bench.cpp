@@ -30,6 +30,7 @@ using Rng = SplitMix64;
 struct Case {
     std::string name;
     std::function<std::unique_ptr<Shape>()> make;
+    bool polygonGrid = true;  ///< IntersectOptions::polygonGrid
 };
 
 /// Rays from a shell around the shape's box towards it. Hit-heavy rays aim at
@@ -64,9 +65,10 @@ struct Timing {
 };
 
 Timing timeIntersect(const Shape& shape, const std::vector<Ray>& rays, int iterations,
-                     Precision precision) {
+                     Precision precision, bool polygonGrid) {
     IntersectOptions opt;
     opt.precision = precision;
+    opt.polygonGrid = polygonGrid;
     Timing result;
     int hits = 0;
     for (const Ray& r : rays) hits += shape.intersect(0, r, 0, kInf, opt).has_value();  // warm-up
@@ -163,6 +165,8 @@ std::vector<Case> cases() {
                  [] { return polygonShape(gearFace(), PolygonTest::Projected); }});
     c.push_back({"144-gon gear, watertight test",
                  [] { return polygonShape(gearFace(), PolygonTest::Watertight); }});
+    c.push_back({"144-gon gear, watertight, no grid",
+                 [] { return polygonShape(gearFace(), PolygonTest::Watertight); }, false});
     return c;
 }
 
@@ -221,8 +225,10 @@ void runPrimitiveBench(std::ostream& out, int iterations) {
         shape->setSidedness(Sidedness::Both);
         for (bool hitHeavy : {true, false}) {
             const std::vector<Ray> rays = makeRays(shape->bounds(), hitHeavy, hitHeavy ? 1 : 2);
-            const Timing d = timeIntersect(*shape, rays, iterations, Precision::Double);
-            const Timing f = timeIntersect(*shape, rays, iterations, Precision::Float);
+            const Timing d =
+                timeIntersect(*shape, rays, iterations, Precision::Double, c.polygonGrid);
+            const Timing f =
+                timeIntersect(*shape, rays, iterations, Precision::Float, c.polygonGrid);
             out << std::left << std::setw(32) << c.name << std::setw(6)
                 << (hitHeavy ? "hit" : "miss") << std::right << std::setprecision(1)
                 << std::setw(11) << d.ns << std::setw(7) << 100 * d.hitFraction << std::setw(11)

@@ -1,0 +1,65 @@
+#include "renderer/io/half_convert.h"
+
+#include <immintrin.h>
+
+#include <cmath>
+
+#include <Imath/half.h>
+
+namespace raylab {
+
+namespace {
+
+constexpr float kHalfMax = 65504.0f;  // largest finite half
+
+/// NaN -> 0, |v| > 65504 -> ±65504. Clamped before rounding because Imath
+/// rounds to nearest: anything from 65520 up would become Inf.
+float safeForHalf(float v) {
+    if (std::isnan(v)) return 0.f;
+    return v > kHalfMax ? kHalfMax : (v < -kHalfMax ? -kHalfMax : v);
+}
+
+__attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* src, uint16_t* dst,
+                                                           size_t n) {
+    const __m256 hi = _mm256_set1_ps(kHalfMax), lo = _mm256_set1_ps(-kHalfMax);
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        __m256 v = _mm256_loadu_ps(src + i);
+        // NaN lanes -> +0 (andnot of the unordered mask), then the clamp;
+        // min/max return their second operand for NaN, which is gone by now.
+        v = _mm256_andnot_ps(_mm256_cmp_ps(v, v, _CMP_UNORD_Q), v);
+        v = _mm256_max_ps(_mm256_min_ps(v, hi), lo);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + i),
+                         _mm256_cvtps_ph(v, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+    }
+    for (; i < n; ++i) {
+        const __m128 v = _mm_set_ss(safeForHalf(src[i]));
+        dst[i] = uint16_t(_mm_extract_epi16(
+            _mm_cvtps_ph(v, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), 0));
+    }
+}
+
+bool cpuHasF16c() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c");
+}
+
+}  // namespace
+
+void floatsToHalfPortable(const float* src, uint16_t* dst, size_t n) {
+    for (size_t i = 0; i < n; ++i) dst[i] = Imath::half(safeForHalf(src[i])).bits();
+}
+
+bool halfConversionUsesF16c() {
+    static const bool has = cpuHasF16c();
+    return has;
+}
+
+void floatsToHalf(const float* src, uint16_t* dst, size_t n) {
+    if (halfConversionUsesF16c())
+        floatsToHalfF16c(src, dst, n);
+    else
+        floatsToHalfPortable(src, dst, n);
+}
+
+}  // namespace raylab

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""Whole-process speed-up of `raylab render` from 1 to N threads (issue 20, bar 3).
+
+    scripts/bench-threads.py [--repeats 7] [--threads 1,2] [--raylab build/bin/raylab[,OTHER]]
+                             [--nice N] -- SCENE [render flags ...]
+
+Runs `raylab render SCENE FLAGS -o OUT.exr --quiet --threads T --stats S.json`
+for every thread count T (and every binary given), interleaved: each round runs
+every command once, in an order that rotates between rounds, after one untimed
+warm-up of each. Prints, per binary and thread count, the medians of the
+process's wall-clock time, its CPU time (user + system), and raylab's own
+--stats phases (render, write), the speed-up of the wall time against the
+first thread count, and the write as a share of the render. --nice N: each
+command in a session of its own at niceness N (see scripts/bench-povray.py:
+plain nice does not help against other sessions' jobs). A benchmark, not a
+test: it asserts nothing.
+"""
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+NICE = None
+
+
+def set_priority():
+    os.setsid()
+    try:
+        with open("/proc/self/autogroup", "w") as fh:
+            fh.write(str(NICE))
+    except OSError:
+        pass
+    os.setpriority(os.PRIO_PROCESS, 0, NICE)
+
+
+def run(cmd):
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, preexec_fn=set_priority if NICE is not None else None)
+    _, status, ru = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit("bench-threads: %s failed: %s" % (" ".join(cmd), proc.stderr.read().decode(errors="replace")))
+    return wall, ru.ru_utime + ru.ru_stime
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeats", type=int, default=7)
+    ap.add_argument("--threads", default="1,2")
+    top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    ap.add_argument("--raylab", default=os.path.join(top, "build", "bin", "raylab"),
+                    help="comma-separated binaries (each timed in the same rounds)")
+    ap.add_argument("--nice", type=int)
+    ap.add_argument("render", nargs="+", help="SCENE and render flags (after --)")
+    args = ap.parse_args()
+    global NICE
+    NICE = args.nice
+    threads = [int(t) for t in args.threads.split(",")]
+    binaries = [os.path.abspath(b) for b in args.raylab.split(",")]
+    work = tempfile.mkdtemp(prefix="bench-threads-")
+    cases = [(b, t) for b in binaries for t in threads]
+
+    def cmd(case):
+        b, t = case
+        return [b, "render"] + args.render + ["-o", os.path.join(work, "out.exr"), "--quiet",
+                                              "--threads", str(t), "--stats", os.path.join(work, "s.json")]
+
+    samples = {c: [] for c in cases}
+    for c in cases:
+        run(cmd(c))  # warm-up
+    load_before = os.getloadavg()
+    for r in range(args.repeats):
+        k = r % len(cases)
+        for c in cases[k:] + cases[:k]:
+            wall, cpu = run(cmd(c))
+            with open(os.path.join(work, "s.json")) as fh:
+                st = json.load(fh)["time_s"]
+            samples[c].append((wall, cpu, st["render"], st["write"]))
+    load_after = os.getloadavg()
+    med = statistics.median
+    print("raylab render %s; %d interleaved rounds, medians; load average before %.1f %.1f %.1f, after %.1f %.1f %.1f%s"
+          % (" ".join(args.render), args.repeats, *load_before, *load_after,
+             "; niceness %d" % NICE if NICE is not None else ""))
+    print()
+    print("| binary | threads | wall s | CPU s | render s | write s | wall speed-up | write ÷ render |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    for b in binaries:
+        base = None
+        for t in threads:
+            s = samples[(b, t)]
+            wall, cpu, ren, wr = (med(x[i] for x in s) for i in range(4))
+            base = base or wall
+            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f× | %.0f%% |"
+                  % (b, t, wall, cpu, ren, wr, base / wall, 100 * wr / ren))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,184 @@
+// The grid in front of the watertight inside test of large polygons
+// (geometry/polygon_grid.h): its cells agree with the geometry, and a polygon
+// gives exactly the same answer (hit or miss, t, u, v) with the grid as with
+// the watertight test alone, for rays aimed anywhere (through vertices and
+// edges exactly, grazing, from far away, at scenes far from the origin and
+// tiny ones), under both fill rules.
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "geometry/polygon.h"
+#include "geometry/polygon_grid.h"
+#include "geometry/primitives.h"
+#include "geometry/random.h"
+
+using namespace raylab;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+/// SPD gears' face outline: 144 vertices, 18 teeth, in the plane z = 0.25.
+std::vector<Vec3> gearFace(const Vec3& centre = {}, double scale = 1) {
+    std::vector<Vec3> v;
+    for (int i = 0; i < 144; ++i) {
+        const double a = 2 * kPi * i / 144;
+        const double r = (i / 4) % 2 == 0 ? 1.0 : 0.8;
+        v.push_back(centre + Vec3{r * std::cos(a), r * std::sin(a), 0.25} * scale);
+    }
+    return v;
+}
+
+/// A {15/7} star: self-intersecting, so even-odd and nonzero differ inside.
+std::vector<Vec3> star(const Vec3& normalTilt) {
+    std::vector<Vec3> v;
+    const Frame f = Frame::fromNormal(normalize(normalTilt));
+    for (int i = 0; i < 15; ++i) {
+        const double a = 2 * kPi * ((7 * i) % 15) / 15;
+        v.push_back(f.t * std::cos(a) + f.b * std::sin(a));
+    }
+    return v;
+}
+
+std::unique_ptr<Polygon> makeGridPolygon(std::vector<Vec3> v, FillRule rule) {
+    PolygonParams p;
+    p.vertices = std::move(v);
+    p.rule = rule;
+    auto shape = makePolygon(p);
+    auto* poly = dynamic_cast<Polygon*>(shape.get());
+    REQUIRE(poly != nullptr);
+    shape.release();
+    poly->setSidedness(Sidedness::Both);
+    return std::unique_ptr<Polygon>(poly);
+}
+
+struct Agreement {
+    long rays = 0, hits = 0, differ = 0;
+};
+
+/// Rays from random origins around the polygon towards: random points in and
+/// around it, exact vertices, exact edge points (midpoints and random
+/// fractions), and grazing directions.
+Agreement compare(const Polygon& poly, uint64_t seed, int count) {
+    SplitMix64 rng(seed);
+    const Bounds3 b = poly.bounds();
+    const Vec3 c = b.centre();
+    const double size = length(b.extent());
+    const std::vector<Vec3>& v = poly.vertices();
+    IntersectOptions withGrid, without;
+    without.polygonGrid = false;
+    Agreement a;
+    for (int i = 0; i < count; ++i) {
+        Vec3 target;
+        switch (i % 4) {
+            case 0: target = c + rng.point(-0.7, 0.7) * size; break;
+            case 1: target = v[rng.next() % v.size()]; break;
+            case 2: {
+                const size_t k = rng.next() % v.size();
+                const double f = i % 8 == 2 ? 0.5 : rng.uniform();
+                target = v[k] + (v[(k + 1) % v.size()] - v[k]) * f;
+                break;
+            }
+            default: target = c + rng.point(-0.5, 0.5) * size; break;
+        }
+        Vec3 dir = rng.direction();
+        if (i % 16 == 3) {
+            // Grazing: almost in the plane.
+            dir = dir - poly.normal() * dot(dir, poly.normal()) + poly.normal() * rng.uniform(-1e-9, 1e-9);
+        }
+        const Vec3 o = target - dir * (size * rng.uniform(0.01, 50));
+        const Ray ray{o, (target - o) * rng.uniform(0.3, 3)};
+        const auto g = poly.intersect(0, ray, 0, kInf, withGrid);
+        const auto w = poly.intersect(0, ray, 0, kInf, without);
+        ++a.rays;
+        a.hits += w.has_value();
+        const bool same = g.has_value() == w.has_value() &&
+                          (!g || (g->t == w->t && g->u == w->u && g->v == w->v));
+        a.differ += !same;
+    }
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("polygon grid: cells of a subdivided square agree with the square") {
+    // A 2x2 square with 4 vertices per side (16 in all), clearance 1e-3.
+    std::vector<Vec2> sq;
+    for (int k = 0; k < 4; ++k) sq.push_back({-1 + 0.5 * k, -1});
+    for (int k = 0; k < 4; ++k) sq.push_back({1, -1 + 0.5 * k});
+    for (int k = 0; k < 4; ++k) sq.push_back({1 - 0.5 * k, 1});
+    for (int k = 0; k < 4; ++k) sq.push_back({-1, 1 - 0.5 * k});
+    const PolygonGrid grid(sq, FillRule::EvenOdd, 1e-3, 400);
+    CHECK(grid.columns() == 20);
+    CHECK(grid.rows() == 20);
+    int inside = 0, edge = 0;
+    for (double y = -1.2; y <= 1.2; y += 0.0173) {
+        for (double x = -1.2; x <= 1.2; x += 0.0191) {
+            const PolygonGrid::Cell c = grid.at(x, y);
+            const double clear = std::min(std::abs(std::abs(x) - 1), std::abs(std::abs(y) - 1));
+            const bool in = std::abs(x) < 1 && std::abs(y) < 1;
+            if (c == PolygonGrid::Cell::Edge) {
+                ++edge;
+                continue;
+            }
+            // A non-Edge answer is right and keeps the clearance.
+            CHECK((c == PolygonGrid::Cell::Inside) == in);
+            CHECK((in ? clear : std::max(std::abs(x) - 1, std::abs(y) - 1)) >= 1e-3);
+            inside += c == PolygonGrid::Cell::Inside;
+        }
+    }
+    CHECK(inside > 0);
+    CHECK(edge > 0);
+    CHECK(grid.at(5, 0) == PolygonGrid::Cell::Outside);
+    CHECK(grid.at(std::numeric_limits<double>::quiet_NaN(), 0) == PolygonGrid::Cell::Outside);
+    CHECK(grid.edgeFraction() < 0.25);
+}
+
+TEST_CASE("polygon grid: the gear face answers exactly as the watertight test") {
+    const auto gear = makeGridPolygon(gearFace(), FillRule::EvenOdd);
+    REQUIRE(gear->grid() != nullptr);
+    CHECK(gear->grid()->edgeFraction() < 0.5);
+    const Agreement a = compare(*gear, 1, 200000);
+    CHECK(a.hits > a.rays / 4);
+    CHECK(a.differ == 0);
+}
+
+TEST_CASE("polygon grid: far from the origin, tiny and huge polygons") {
+    for (const auto& [centre, scale] : {std::pair<Vec3, double>{{1e6, -2e6, 3e5}, 1.0},
+                                        {{0.5, 0.25, -1}, 1e-6},
+                                        {{1e3, 1e3, 1e3}, 1e5},
+                                        {{-7e7, 1e-3, 0}, 1e-2}}) {
+        CAPTURE(centre.x);
+        CAPTURE(scale);
+        const auto gear = makeGridPolygon(gearFace(centre, scale), FillRule::EvenOdd);
+        const Agreement a = compare(*gear, 7, 40000);
+        CHECK(a.hits > 0);
+        CHECK(a.differ == 0);
+    }
+}
+
+TEST_CASE("polygon grid: a self-intersecting star under both fill rules") {
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+        const auto s = makeGridPolygon(star({0.3, -0.2, 1}), rule);
+        REQUIRE(s->grid() != nullptr);
+        const Agreement a = compare(*s, 3, 100000);
+        CHECK(a.hits > 0);
+        CHECK(a.differ == 0);
+    }
+}
+
+TEST_CASE("polygon grid: vertices off the plane (within the planarity tolerance)") {
+    // SPD writes 6 significant digits: the vertices wander off the plane.
+    std::vector<Vec3> v = gearFace({2, 1, 0}, 3);
+    SplitMix64 rng(5);
+    for (Vec3& p : v) p.z += rng.uniform(-2e-5, 2e-5);
+    const auto gear = makeGridPolygon(v, FillRule::EvenOdd);
+    REQUIRE(gear->grid() != nullptr);
+    const Agreement a = compare(*gear, 11, 100000);
+    CHECK(a.hits > 0);
+    CHECK(a.differ == 0);
+}

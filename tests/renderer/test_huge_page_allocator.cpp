@@ -1,0 +1,40 @@
+// The frame buffers' allocator: small requests through operator new, large
+// ones as 2 MiB-aligned mappings with the huge-page hint; containers behave
+// as with std::allocator.
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "renderer/huge_page_allocator.h"
+
+using namespace raylab;
+
+TEST_CASE("huge page allocator: sizes around the threshold, alignment, contents") {
+    HugePageAllocator<float> a;
+    for (size_t bytes : {size_t(4), size_t(4096), huge_pages::kThreshold - 4,
+                         huge_pages::kThreshold, huge_pages::kThreshold + 4, size_t(13) << 20}) {
+        CAPTURE(bytes);
+        const size_t n = bytes / sizeof(float);
+        float* p = a.allocate(n);
+        REQUIRE(p != nullptr);
+        if (bytes >= huge_pages::kThreshold)
+            CHECK(reinterpret_cast<uintptr_t>(p) % huge_pages::kHugePage == 0);
+        for (size_t i = 0; i < n; ++i) p[i] = float(i);  // every byte is writable
+        CHECK(p[n - 1] == float(n - 1));
+        a.deallocate(p, n);
+    }
+}
+
+TEST_CASE("huge page allocator: a vector grows across the threshold and keeps its values") {
+    std::vector<uint32_t, HugePageAllocator<uint32_t>> v;
+    for (uint32_t i = 0; i < (3u << 20); ++i) v.push_back(i);  // 12 MiB, several reallocations
+    CHECK(std::accumulate(v.begin(), v.end(), uint64_t(0)) == uint64_t(3u << 20) * ((3u << 20) - 1) / 2);
+    auto moved = std::move(v);
+    CHECK(moved.size() == (3u << 20));
+    CHECK(moved.back() == (3u << 20) - 1);
+    moved.assign(10, 7u);  // back below the threshold
+    CHECK(moved == std::vector<uint32_t, HugePageAllocator<uint32_t>>(10, 7u));
+}
