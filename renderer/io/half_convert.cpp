@@ -1,5 +1,7 @@
 #include "renderer/io/half_convert.h"
 
+#include <cpuid.h>
+
 #include <immintrin.h>
 
 #include <cmath>
@@ -40,8 +42,16 @@ __attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* src, uint
 }
 
 bool cpuHasF16c() {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c");
+    // cpuid directly: clang 14's __builtin_cpu_supports does not know "f16c".
+    // VEX instructions also need the OS to save the AVX state (OSXSAVE, XCR0).
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    if (!__get_cpuid(1, &eax, &ebx, &ecx, &edx)) return false;
+    const bool osxsave = (ecx & (1u << 27)) != 0, avx = (ecx & (1u << 28)) != 0,
+               f16c = (ecx & (1u << 29)) != 0;
+    if (!osxsave || !avx || !f16c) return false;
+    unsigned xcr0Low = 0, xcr0High = 0;
+    __asm__ volatile("xgetbv" : "=a"(xcr0Low), "=d"(xcr0High) : "c"(0));
+    return (xcr0Low & 6u) == 6u;  // SSE and AVX state enabled
 }
 
 }  // namespace

@@ -334,12 +334,12 @@ public:
             std::vector<Vec3> corners;
             std::vector<std::array<uint32_t, 3>> triangles;
             for (size_t i = r.begin(); i != r.end(); ++i)
-                plan(m_data.faces[i], corners, triangles, m_plans[i], &m_planned[slot[i]]);
+                plan(m_data.faces[i], corners, triangles, m_plans[i], m_planned.data() + slot[i]);
         });
         m_smooth.reserve(m_data.positions.size(), slot.back());
         m_flat.reserve(m_data.positions.size(), slot.back());
         for (size_t i = 0; i < m_data.faces.size(); ++i)
-            face(m_data.faces[i], m_plans[i], &m_planned[slot[i]]);
+            face(m_data.faces[i], m_plans[i], m_planned.data() + slot[i]);
         std::vector<FacePlan>().swap(m_plans);
         std::vector<PlannedTriangle>().swap(m_planned);
     }

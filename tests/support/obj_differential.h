@@ -231,8 +231,9 @@ inline size_t smallChunks(std::string_view text) { return text.size() < 65536 ? 
 /// Whether two parses gave identical data, bit for bit.
 inline bool sameObjData(const ObjData& a, const ObjData& b) {
     const auto same = [](const auto& x, const auto& y) {
+        // memcmp must not see the null data() of an empty vector (UBSan).
         return x.size() == y.size() &&
-               std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+               (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
     };
     if (!same(a.positions, b.positions) || !same(a.colors, b.colors) ||
         !same(a.normals, b.normals) || !same(a.texcoords, b.texcoords) ||
