@@ -27,7 +27,7 @@ const char* const kMainHelp =
     "\n"
     "usage: raylab <command> [options]\n"
     "       raylab help <command>      the options of a command (= raylab <command> --help)\n"
-    "       raylab --version           the version\n"
+    "       raylab --version, -V       the version\n"
     "\n"
     "commands:\n"
     "  render SCENE -o OUT.exr [options]   render a scene (.json, .obj or .nff) to OpenEXR\n"
