@@ -7,7 +7,6 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
-#include <regex>
 #include <string>
 
 #include "support/run_command.h"
@@ -40,10 +39,13 @@ std::string chromium() {
     return "";
 }
 
+/// The value of the first `name="..."` in `html` ("" when there is none).
 std::string attribute(const std::string& html, const std::string& name) {
-    std::smatch m;
-    if (std::regex_search(html, m, std::regex(name + "=\"([^\"]*)\""))) return m[1];
-    return "";
+    const std::string open = name + "=\"";
+    const size_t at = html.find(open);
+    if (at == std::string::npos) return "";
+    const size_t from = at + open.size(), to = html.find('"', from);
+    return to == std::string::npos ? "" : html.substr(from, to - from);
 }
 
 size_t countOf(const std::string& s, const std::string& what) {
