@@ -31,7 +31,7 @@ const char* const kAccuracyHelp =
     "\n"
     "What accuracy costs in time. Renders a reference of SCENE (64 stratified jittered samples\n"
     "per pixel, depth 12, double-precision intersectors, robust Embree traversal, robust\n"
-    "self-intersection offset), then sweeps each accuracy knob alone from the renderer's\n"
+    "self-intersection offset, point-sampled textures), then sweeps each accuracy knob alone from the renderer's\n"
     "defaults (1 spp, depth 5, double, robust offset, medium BVH), plus a few combinations:\n"
     "  spp         4, 16 samples per pixel\n"
     "  adaptive    Whitted adaptive supersampling, thresholds 0.1, 0.03, 0.01 (2 levels; 0.01 with "
@@ -42,6 +42,7 @@ const char* const kAccuracyHelp =
     "  offset      fixed epsilon 1e-2, 1e-4, 1e-6 instead of the robust offset\n"
     "  bvh         Embree build quality low, high; robust traversal\n"
     "  shadows     opaque shadow feelers (the classic Whitted shadow) instead of filtered\n"
+    "  texture     (scenes with textures) every --texture-filter with every --texture-footprint\n"
     "  combo       preview, spp 4 + depth 3, adaptive + pruning, spp 16 + depth 8 + robust\n"
     "For each setting: build and render time (wall clock, and CPU time of all threads; medians\n"
     "of interleaved runs), rays traced, RMSE, PSNR and largest channel error in linear RGB\n"
@@ -177,7 +178,7 @@ int accuracyCommand(const std::vector<std::string>& args) {
     options.threads = cli.threads;
     options.visibleLevels = cli.visible;
     options.keepImages = !cli.html.empty();
-    for (AccuracySetting& s : accuracySweepSettings(cli.quick)) {
+    for (AccuracySetting& s : accuracySweepSettings(cli.quick, hasTextures(scene))) {
         const bool wanted =
             cli.knobs.empty() || s.knob == "default" ||
             std::find(cli.knobs.begin(), cli.knobs.end(), s.knob) != cli.knobs.end();

@@ -15,6 +15,7 @@
 #include "tools/bench/ingest_bench.h"
 #include "tools/bench/limit_bench.h"
 #include "tools/bench/primitive_bench.h"
+#include "tools/bench/texture_bench.h"
 
 namespace raylab {
 
@@ -30,6 +31,8 @@ const char* const kBenchHelp =
     "                        replaying the same rays\n"
     "  effects SCENE...      specialised kernel vs general kernel (every ray type at every hit)\n"
     "  primitives            ns per intersect() call of every analytic primitive\n"
+    "  textures              ns per texture lookup: raylab's MIP pyramid vs OpenImageIO's\n"
+    "                        TextureSystem, every filter\n"
     "  ingest                OBJ ingest: MB/s and peak memory per triangle loading a generated\n"
     "                        2-million-triangle height-field OBJ\n"
     "\n"
@@ -97,6 +100,14 @@ const char* const kBenchPrimitivesHelp =
     "ns per intersect() call of every analytic primitive, for rays that hit and rays\n"
     "that miss, in double and float precision, and both polygon inside tests.\n";
 
+const char* const kBenchTexturesHelp =
+    "usage: raylab bench textures [--size N] [--lookups N] [--runs N]\n"
+    "\n"
+    "ns per texture lookup of raylab's own MIP pyramid and of OpenImageIO's TextureSystem on\n"
+    "the same N x N linear float image (default 1024), for point, bilinear, trilinear and\n"
+    "anisotropic filtering, on the same random points and footprints (0.5 to 16 texels,\n"
+    "anisotropy up to 8); one thread, fastest of --runs (default 5) runs of --lookups\n"
+    "(default 200000) lookups; the mean absolute difference of the two answers.\n";
 const char* const kBenchIngestHelp =
     "usage: raylab bench ingest [--triangles N] [--runs N] [--threads N] [--dir DIR]\n"
     "\n"
@@ -142,6 +153,10 @@ const CommandFlags kBenchEffectsFlags{"bench effects", kBenchEffectsHelp,
                                        {"--spd", "", false}}};
 const CommandFlags kBenchPrimitivesFlags{"bench primitives", kBenchPrimitivesHelp,
                                          {{"--iterations", "", true}}};
+const CommandFlags kBenchTexturesFlags{"bench textures", kBenchTexturesHelp,
+                                       {{"--size", "", true},
+                                        {"--lookups", "", true},
+                                        {"--runs", "", true}}};
 const CommandFlags kBenchIngestFlags{"bench ingest", kBenchIngestHelp,
                                      {{"--triangles", "", true},
                                       {"--runs", "", true},
@@ -215,6 +230,20 @@ int benchPrimitives(const std::vector<std::string>& args) {
     return 0;
 }
 
+int benchTextures(const std::vector<std::string>& args) {
+    TextureBenchOptions o;
+    ArgParser p(args, kBenchTexturesFlags);
+    while (!p.done()) {
+        const std::string a = p.next();
+        if (a == "--size") o.size = int(p.integer(a, 2, 8192));
+        else if (a == "--lookups") o.lookups = int(p.integer(a, 1, 100000000));
+        else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
+        else throw UsageError("bench textures: unknown argument '" + a + "'");
+    }
+    runTextureBench(o, std::cout);
+    return 0;
+}
+
 int benchIngest(const std::vector<std::string>& args) {
     IngestBenchOptions o;
     ArgParser p(args, kBenchIngestFlags);
@@ -234,8 +263,11 @@ int benchIngest(const std::vector<std::string>& args) {
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args) {
-    if (args.empty()) throw UsageError("bench: expected a benchmark: accel, limit, effects, primitives or ingest");
-    const std::vector<std::string> benchmarks{"accel", "limit", "effects", "primitives", "ingest"};
+    if (args.empty())
+        throw UsageError(
+            "bench: expected a benchmark: accel, limit, effects, primitives, textures or ingest");
+    const std::vector<std::string> benchmarks{"accel", "limit", "effects", "primitives", "textures",
+                                              "ingest"};
     const std::string which = args.front();
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (isHelp(which)) help(kBenchHelp);
@@ -243,10 +275,12 @@ int benchCommand(const std::vector<std::string>& args) {
     if (which == "limit") return benchLimit(rest);
     if (which == "effects") return benchEffects(rest);
     if (which == "primitives") return benchPrimitives(rest);
+    if (which == "textures") return benchTextures(rest);
     if (which == "ingest") return benchIngest(rest);
     const std::string hint = didYouMean(which, benchmarks);
     throw UsageError("bench: unknown benchmark '" + which + "'" +
-                     (hint.empty() ? " (expected accel, limit, effects, primitives or ingest)" : hint));
+                     (hint.empty() ? " (expected accel, limit, effects, primitives, textures or ingest)"
+                                   : hint));
 }
 
 }  // namespace raylab

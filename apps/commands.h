@@ -25,6 +25,7 @@ extern const char* const kRenderHelp;
 /// The flags of every command and benchmark (help text included), for the
 /// tests that check each is in its --help.
 extern const CommandFlags kRenderFlags, kAccuracyFlags, kCompareFlags, kBenchAccelFlags,
-    kBenchLimitFlags, kBenchEffectsFlags, kBenchPrimitivesFlags, kBenchIngestFlags;
+    kBenchLimitFlags, kBenchEffectsFlags, kBenchPrimitivesFlags, kBenchTexturesFlags,
+    kBenchIngestFlags;
 
 }  // namespace raylab

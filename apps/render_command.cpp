@@ -131,6 +131,13 @@ const char* const kRenderHelp =
     "                           uses; all: the general kernel, every ray type at every hit with\n"
     "                           pruning off (the same picture, slower: docs/effects.md)\n"
     "\n"
+    "textures (docs/accuracy.md#textures):\n"
+    "  --texture-filter point|bilinear|trilinear|anisotropic   lookups: nearest texel or bilinear\n"
+    "                           on the full image, or filtered over each sample's footprint:\n"
+    "                           trilinear MIP mapping or EWA (default trilinear)\n"
+    "  --texture-footprint cones|differentials   how footprints travel with rays: ray cones or\n"
+    "                           Igehy's ray differentials (default differentials)\n"
+    "\n"
     "distributed (docs/distributed.md):\n"
     "  mpirun -np N raylab render SCENE -o OUT.exr ...   N processes render one image (or\n"
     "                           sequence), bit-identical to one process; rank 0 writes the files;\n"
@@ -156,7 +163,8 @@ const CommandFlags kRenderFlags{
      {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
      {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
      {"--precision", "", true},     {"--shadows", "", true},     {"--epsilon", "", true},
-     {"--polygons", "", true},      {"--effects", "", true}}};
+     {"--polygons", "", true},      {"--effects", "", true},     {"--texture-filter", "", true},
+     {"--texture-footprint", "", true}}};
 
 namespace {
 
@@ -311,6 +319,9 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--up")
             cli.upAxis = upAxisNamed(p.choice(a, {"x", "y", "z", "-x", "-y", "-z"}));
+        else if (a == "--texture-filter") o.textureFilter = p.choice(a, textureFilterNames());
+        else if (a == "--texture-footprint")
+            o.textureFootprint = p.choice(a, textureFootprintNames());
         else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());
         else if (a == "--crop") cli.crop = parseCropWindow(a, p.value(a));
         else if (!a.empty() && a[0] == '-') throw std::logic_error("render: flag '" + a + "' declared but not handled");
@@ -379,6 +390,10 @@ void printSummary(const RenderStats& s, const Film& film, const std::string& exr
     std::string effects;
     for (const std::string& e : s.effects) effects += (effects.empty() ? "" : ", ") + e;
     std::printf("  effects:  %s\n", effects.empty() ? "(none: local shading only)" : effects.c_str());
+    if (s.textures)
+        std::printf("  textures: %llu (%.1f MiB), filter %s, footprint %s\n",
+                    (unsigned long long)s.textures->count, s.textures->mebibytes,
+                    s.textures->filter.c_str(), s.textures->footprint.c_str());
     std::printf("  time:     parse %.3f s, build %.3f s, render %.3f s, write %.3f s\n",
                 s.parseSeconds, s.buildSeconds, s.renderSeconds, s.writeSeconds);
     std::printf("  rays:     camera %llu (hits %llu), shadow %llu, reflection %llu, refraction %llu\n",
@@ -522,6 +537,11 @@ int renderCommand(const std::vector<std::string>& args) {
             std::fprintf(stderr, "%s", rayCapWarning(result, options, cli.frames ? frame : 0).c_str());
         }
         stats.filter = accel->filterCounts() - filterBefore;
+        if (effects.textures())
+            stats.textures = RenderStats::Textures{
+                textureFilterName(options.textures.filter),
+                textureFootprintName(options.textures.footprint), scene.textures.size(),
+                scene.textureBytes() / (1 << 20)};
 
         enterPhase(Phase::Write);
         t0 = Clock::now();

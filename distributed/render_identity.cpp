@@ -48,6 +48,8 @@ std::string optionWords(const RenderOptions& o) {
     add("spawn_reference", exact(o.spawn.reference));
     add("spd", o.spd ? "on" : "off");
     add("shadows", shadowModeName(o.shadows));
+    add("texture_filter", textureFilterName(o.textures.filter));
+    add("texture_footprint", textureFootprintName(o.textures.footprint));
     add("effects", o.forceAllEffects ? "all" : "auto");
     add("aovs", o.wantAovs ? "on" : "off");
     add("crop", exact(o.crop.x0) + "," + exact(o.crop.x1) + "," + exact(o.crop.y0) + "," +

@@ -91,4 +91,35 @@ Ray Camera::generateRay(double px, double py, int width, int height) const {
     return Ray{f.eye + f.u * (sx * halfWidth) + f.v * (sy * halfHeight), -f.w};
 }
 
+RayDifferential Camera::differential(const Ray& ray, int width, int height,
+                                     double spacing) const {
+    const CameraFrame& f = m_frame;
+    const double aspect = double(width) / double(height);
+    RayDifferential rd;
+    if (m_projection == Projection::Perspective) {
+        // The unnormalised direction d' = u sx hw + v sy hh - w has w-component
+        // -1; its change per pixel is u (2 hw / W) and v (-2 hh / H), and the
+        // unit direction d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|.
+        const double halfHeight = m_tanHalfFov, halfWidth = halfHeight * aspect;
+        const Vec3 d = normalize(ray.d);
+        const double along = -dot(d, f.w);
+        const double len = 1.0 / along;  // |d'|
+        const Vec3 ddx = f.u * (2.0 * halfWidth / width * spacing);
+        const Vec3 ddy = f.v * (-2.0 * halfHeight / height * spacing);
+        rd.dddx = (ddx - d * dot(d, ddx)) / len;
+        rd.dddy = (ddy - d * dot(d, ddy)) / len;
+        return rd;
+    }
+    const double halfWidth = 0.5 * m_viewWidth, halfHeight = halfWidth / aspect;
+    rd.dodx = f.u * (2.0 * halfWidth / width * spacing);
+    rd.dody = f.v * (-2.0 * halfHeight / height * spacing);
+    return rd;
+}
+
+RayCone Camera::cone(int width, int height, double spacing) const {
+    if (m_projection == Projection::Perspective)
+        return RayCone{0.0, std::atan(2.0 * m_tanHalfFov * spacing / height)};
+    return RayCone{m_viewWidth / width * spacing, 0.0};
+}
+
 }  // namespace raylab

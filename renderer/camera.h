@@ -8,6 +8,8 @@
 
 #include "geometry/ray.h"
 #include "geometry/vec.h"
+#include "shading/ray_cone.h"
+#include "shading/ray_differential.h"
 
 namespace raylab {
 
@@ -47,6 +49,13 @@ public:
     /// std::invalid_argument like the factories, and for a field of view on
     /// an orthographic camera.
     Camera overridden(const CameraOverrides& o) const;
+    /// Igehy's camera differential of a ray this camera generated, for a step
+    /// of `spacing` pixels right (x) and down (y): derived from the ray
+    /// itself, so callers need not know which pixel it came through.
+    RayDifferential differential(const Ray& ray, int width, int height, double spacing) const;
+    /// The ray cone of a sample `spacing` pixels wide (RTG ch. 20: width 0
+    /// and the pixel's spread angle, or an orthographic pixel's width).
+    RayCone cone(int width, int height, double spacing) const;
 
     const CameraFrame& frame() const { return m_frame; }
     /// The point the camera looks at (orthographic: eye + direction) and the

@@ -12,6 +12,7 @@ std::vector<std::string> EffectSet::names() const {
     if (has(kHighlights)) n.push_back("highlights");
     if (has(kReflection)) n.push_back("reflection");
     if (has(kRefraction)) n.push_back("refraction");
+    if (has(kTextures)) n.push_back("textures");
     if (smoothNormals) n.push_back("smooth_normals");
     if (antialiasing) n.push_back("antialiasing");
     if (aovs) n.push_back("aovs");
@@ -21,16 +22,18 @@ std::vector<std::string> EffectSet::names() const {
 
 EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
     EffectSet e;
+    // Only materials that some object uses count.
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Object& o : scene.objects) {
+        if (o.material < used.size()) used[o.material] = true;
+        for (uint32_t m : o.faceMaterials)
+            if (m < used.size()) used[m] = true;
+    }
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (used[i] && scene.materials[i].maps.any()) e.kernel |= kTextures;
     if (options.forceAllEffects) {
-        e.kernel = kAllKernelEffects;
+        e.kernel |= kAllKernelEffects;
     } else {
-        // Only materials that some object uses count.
-        std::vector<bool> used(scene.materials.size(), false);
-        for (const Object& o : scene.objects) {
-            if (o.material < used.size()) used[o.material] = true;
-            for (uint32_t m : o.faceMaterials)
-                if (m < used.size()) used[m] = true;
-        }
         const bool secondary = options.maxDepth > 1;
         for (size_t i = 0; i < scene.materials.size(); ++i) {
             if (!used[i]) continue;

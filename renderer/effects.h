@@ -19,7 +19,11 @@ enum EffectBits : unsigned {
     kReflection = 1u << 2,  ///< some material has km > 0 (SPD mode: ks > 0 or kt > 0)
     kRefraction = 1u << 3,  ///< some material has kt > 0
     kKernelBits = 4,
-    kAllKernelEffects = (1u << kKernelBits) - 1,
+    kAllKernelEffects = (1u << kKernelBits) - 1,  ///< what the general kernel (--effects all) forces
+    /// Some material in use has a texture: surface parameters, footprints and
+    /// texture lookups at every hit. A kernel bit of its own, outside
+    /// kAllKernelEffects: the general kernel of an untextured scene has none.
+    kTextures = 1u << kKernelBits,
 };
 
 struct EffectSet {
@@ -32,6 +36,7 @@ struct EffectSet {
     bool filteredShadows = false;
 
     bool has(EffectBits b) const { return (kernel & b) != 0; }
+    bool textures() const { return has(kTextures); }
     /// Names for the summary and --stats ("shadows", "reflection", ...).
     std::vector<std::string> names() const;
 };

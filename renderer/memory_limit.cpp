@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -115,19 +117,37 @@ MemoryFacts readMemoryFacts() {
     return f;
 }
 
+std::string describeBytes(double bytes) {
+    const double kib = 1024.0, mib = kib * kib;
+    char text[48];
+    if (bytes < mib)
+        std::snprintf(text, sizeof text, "%.0f KiB", std::ceil(bytes / kib));
+    else if (bytes < 10 * mib)
+        std::snprintf(text, sizeof text, "%.1f MiB", bytes / mib);
+    else
+        std::snprintf(text, sizeof text, "%.0f MiB", std::floor(bytes / mib));
+    return text;
+}
+
 std::optional<MemoryLimit> tightestMemoryLimit(const MemoryFacts& f) {
     std::optional<MemoryLimit> best;
-    const auto consider = [&](double bytes, const char* source) {
+    const auto consider = [&](double bytes, const std::string& source) {
         if (bytes < 0) bytes = 0;
         if (!best || bytes < best->bytes) best = MemoryLimit{bytes, source};
     };
     // 80%: the rest of the system (and this process's own scene) needs room too.
-    if (f.physicalBytes) consider(0.8 * *f.physicalBytes, "this machine's memory");
-    if (f.availableBytes) consider(*f.availableBytes, "the memory available now (MemAvailable)");
-    if (f.cgroupLimitBytes) consider(0.8 * *f.cgroupLimitBytes, "the cgroup memory limit");
-    if (f.addressSpaceBytes)
+    if (f.physicalBytes) consider(0.8 * *f.physicalBytes, "this machine's memory allows");
+    if (f.availableBytes) consider(*f.availableBytes, "the memory available now (MemAvailable) allows");
+    if (f.cgroupLimitBytes) consider(0.8 * *f.cgroupLimitBytes, "the cgroup memory limit allows");
+    if (f.addressSpaceBytes) {
+        // Say what the limit leaves: under a small `ulimit -v` the mapped
+        // libraries and the reserve take it all, and "0 MiB" alone puzzles.
         consider(*f.addressSpaceBytes - f.virtualSizeBytes - kAddressSpaceReserve,
-                 "the address-space limit (ulimit -v)");
+                 "the address-space limit (ulimit -v) allows (" +
+                     describeBytes(*f.addressSpaceBytes) + ", less " +
+                     describeBytes(f.virtualSizeBytes) + " mapped already and " +
+                     describeBytes(kAddressSpaceReserve) + " kept in reserve)");
+    }
     return best;
 }
 

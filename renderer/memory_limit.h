@@ -24,7 +24,7 @@ struct MemoryFacts {
 /// The bound that applies and where it comes from ("physical memory", ...).
 struct MemoryLimit {
     double bytes = 0;
-    std::string source;
+    std::string source;  ///< the rest of a sentence: "this machine's memory allows", ...
 };
 
 /// Reads the facts of this machine and process (Linux /proc and /sys; a
@@ -39,6 +39,10 @@ std::optional<MemoryLimit> tightestMemoryLimit(const MemoryFacts& facts);
 /// Address space kept back under `ulimit -v` for what the estimate does not
 /// count: worker-thread stacks and the allocator's per-thread arenas.
 constexpr double kAddressSpaceReserve = 256.0 * (1 << 20);
+
+/// A size in the memory guard's messages: "64 KiB", "2.5 MiB", "393216 MiB"
+/// (whole MiB rounded down from 10 MiB on, so a refusal never reads "0 MiB").
+std::string describeBytes(double bytes);
 
 /// "MemAvailable:   123456 kB" in a /proc/meminfo text, in bytes.
 std::optional<double> parseMemAvailable(const std::string& meminfo);

@@ -48,4 +48,17 @@ const OptionNames<ShadowMode>& shadowModeNames() {
     return names;
 }
 
+const OptionNames<TextureFilter>& textureFilterNames() {
+    static const auto names = tableOf({TextureFilter::Point, TextureFilter::Bilinear,
+                                       TextureFilter::Trilinear, TextureFilter::Anisotropic},
+                                      textureFilterName);
+    return names;
+}
+
+const OptionNames<TextureFootprint>& textureFootprintNames() {
+    static const auto names = tableOf(
+        {TextureFootprint::Cones, TextureFootprint::Differentials}, textureFootprintName);
+    return names;
+}
+
 }  // namespace raylab

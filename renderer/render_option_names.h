@@ -14,6 +14,7 @@
 #include "renderer/accelerator_kind.h"
 #include "renderer/render_overrides.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -32,6 +33,10 @@ const OptionNames<Precision>& precisionNames();
 const OptionNames<EffectsMode>& effectsModeNames();
 /// --shadows, "shadows": opaque, filtered.
 const OptionNames<ShadowMode>& shadowModeNames();
+/// --texture-filter, "texture_filter": point, bilinear, trilinear, anisotropic.
+const OptionNames<TextureFilter>& textureFilterNames();
+/// --texture-footprint, "texture_footprint": cones, differentials.
+const OptionNames<TextureFootprint>& textureFootprintNames();
 
 /// "float" or "double" (the word of --precision).
 const char* precisionName(Precision precision);

@@ -10,6 +10,7 @@
 #include "renderer/accelerator_kind.h"
 #include "renderer/crop_window.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -44,6 +45,7 @@ struct RenderOptions {
     AccelOptions accelOptions;  ///< also the intersectors' accuracy knobs (precision, polygons)
     SpawnSettings spawn;      ///< self-intersection strategy
     ShadowMode shadows = ShadowMode::Filtered;  ///< SPD's procedure: opaque
+    TextureOptions textures;  ///< filter and footprint of texture lookups
 
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)

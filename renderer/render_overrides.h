@@ -10,6 +10,7 @@
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
 #include "renderer/shadow_mode.h"
+#include "renderer/texture_options.h"
 
 namespace raylab {
 
@@ -30,6 +31,8 @@ struct RenderOverrides {
     std::optional<EffectsMode> effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
+    std::optional<TextureFilter> textureFilter;        ///< --texture-filter
+    std::optional<TextureFootprint> textureFootprint;  ///< --texture-footprint
     bool spd = false;
     bool robust = false;
 };

@@ -35,6 +35,8 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
         r.spawn.epsilon = *o.epsilon;
     }
     if (o.effects) r.forceAllEffects = *o.effects == EffectsMode::All;
+    if (o.textureFilter) r.textures.filter = *o.textureFilter;
+    if (o.textureFootprint) r.textures.footprint = *o.textureFootprint;
 }
 
 }  // namespace
@@ -73,21 +75,19 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
     const size_t primitives = scene.primitiveCount();
     const MemoryEstimate e = estimateRenderMemory(options.width, options.height, primitives);
     if (!limit || e.total() <= limit->bytes) return;
-    const auto mib = [](double bytes) { return std::to_string(int64_t(bytes / (1 << 20))); };
     const std::string image =
         "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";
     const std::string what =
         e.accelBytes < 0.01 * e.total()
-            ? image + " needs about " + mib(e.total()) + " MiB"
+            ? image + " needs about " + describeBytes(e.total())
             : image + " of " + std::to_string(primitives) + " primitives needs about " +
-                  mib(e.total()) + " MiB (film " + mib(e.filmBytes) +
-                  " MiB, acceleration structure " + mib(e.accelBytes) + " MiB)";
+                  describeBytes(e.total()) + " (film " + describeBytes(e.filmBytes) +
+                  ", acceleration structure " + describeBytes(e.accelBytes) + ")";
     // Point at the file's image size when that is what the render uses.
     const bool sizeFromFile =
         options.width == scene.image.width && options.height == scene.image.height;
     throw InputError(scene.sourcePath, sizeFromFile ? scene.image.sizeLine : 0,
-                     what + ", more than the " + mib(limit->bytes) + " MiB that " + limit->source +
-                         " allows");
+                     what + ", more than the " + describeBytes(limit->bytes) + " that " + limit->source);
 }
 
 }  // namespace raylab

@@ -147,6 +147,14 @@ std::string RenderStats::toJson() const {
     json.number("cut_out_candidates", filter.cutOut);
     json.number("attenuating_crossings", filter.attenuated);
     json.endObject();
+    if (textures) {
+        json.beginObject("textures");
+        json.string("filter", textures->filter);
+        json.string("footprint", textures->footprint);
+        json.number("count", textures->count);
+        json.number("mib", textures->mebibytes);
+        json.endObject();
+    }
     json.endObject();
     return json.str();
 }

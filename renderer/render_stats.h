@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,14 @@ struct RenderStats {
     /// Candidate hits cut out and transmitter crossings of shadow feelers
     /// (this process's accelerator: under mpirun, rank 0's share).
     FilterCounts filter;
+    /// Textured scenes only ("textures" effect): the lookup settings, the
+    /// number of textures and the MiB of their MIP pyramids.
+    struct Textures {
+        std::string filter, footprint;
+        uint64_t count = 0;
+        double mebibytes = 0;
+    };
+    std::optional<Textures> textures;
 
     /// Million rays (all types) per second of render time.
     double mraysPerSecond() const {

@@ -1,5 +1,7 @@
 #include "renderer/scene.h"
 
+#include <set>
+
 namespace raylab {
 
 size_t Scene::primitiveCount() const {
@@ -13,6 +15,14 @@ Bounds3 Scene::bounds() const {
     for (const Object& o : objects)
         if (o.shape) b.expand(o.shape->bounds());
     return b;
+}
+
+double Scene::textureBytes() const {
+    std::set<const MipMap*> seen;
+    double bytes = 0;
+    for (const Texture& t : textures)
+        if (t.image() && seen.insert(t.image()).second) bytes += double(t.image()->bytes());
+    return bytes;
 }
 
 SurfaceInteraction Scene::surfaceAt(const Ray& ray, const Hit& hit, const IntersectOptions& opt,

@@ -16,6 +16,7 @@
 #include "shading/color.h"
 #include "shading/light.h"
 #include "shading/material.h"
+#include "shading/texture.h"
 
 namespace raylab {
 
@@ -61,12 +62,15 @@ struct Scene {
     Color ambient{0, 0, 0};  ///< Ia
     std::vector<Light> lights;
     std::vector<Material> materials;
+    std::vector<Texture> textures;  ///< what Material::maps index; images shared by file
     std::vector<Object> objects;
 
     /// Total primitive count (analytic shapes + triangles).
     size_t primitiveCount() const;
     /// Bounds of all objects.
     Bounds3 bounds() const;
+    /// Bytes of the textures' MIP pyramids, each shared image once.
+    double textureBytes() const;
     /// Surface data for a hit found by any accelerator, from the hit object's
     /// shape (triangle hits are recomputed in double from the chosen triangle,
     /// so Embree and the naive loop hand identical data to shading whenever

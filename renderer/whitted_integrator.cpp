@@ -1,8 +1,10 @@
 #include "renderer/whitted_integrator.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 #include "geometry/spawn.h"
 #include "renderer/cancel.h"
@@ -17,12 +19,18 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// The diffuse reflectance at a hit: kd times the surface's colour (a mesh's
-/// vertex colours; white, which leaves kd as it is, everywhere else).
-Color diffuseAt(const SurfaceInteraction& si, const Material& m) {
+/// vertex colours; white, which leaves kd as it is, everywhere else), kd
+/// already textured for textured materials.
+Color diffuseAt(const SurfaceInteraction& si, const SurfaceOptics& m) {
     return m.kd * Color(si.color.x, si.color.y, si.color.z);
 }
 
 }  // namespace
+
+template <unsigned... E>
+constexpr auto WhittedIntegrator::kernelTable(std::integer_sequence<unsigned, E...>) {
+    return std::array<Kernel, sizeof...(E)>{&WhittedIntegrator::start<E>...};
+}
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& accel,
                                      const RenderOptions& options, const EffectSet& effects)
@@ -31,19 +39,13 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
     // One instantiation of trace<E> per effect combination, chosen once here.
-    static_assert(kAllKernelEffects == 15, "update the dispatch table");
-    static constexpr Kernel table[16] = {
-        &WhittedIntegrator::trace<0>,  &WhittedIntegrator::trace<1>,
-        &WhittedIntegrator::trace<2>,  &WhittedIntegrator::trace<3>,
-        &WhittedIntegrator::trace<4>,  &WhittedIntegrator::trace<5>,
-        &WhittedIntegrator::trace<6>,  &WhittedIntegrator::trace<7>,
-        &WhittedIntegrator::trace<8>,  &WhittedIntegrator::trace<9>,
-        &WhittedIntegrator::trace<10>, &WhittedIntegrator::trace<11>,
-        &WhittedIntegrator::trace<12>, &WhittedIntegrator::trace<13>,
-        &WhittedIntegrator::trace<14>, &WhittedIntegrator::trace<15>,
-    };
-    m_kernel = table[m_effects.kernel & kAllKernelEffects];
+    constexpr unsigned kKernels = 2 * kTextures;
+    static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
+    m_kernel = table[m_effects.kernel & (kKernels - 1)];
+    if (m_effects.textures()) m_textures = std::make_unique<TextureShading>(scene, options);
 }
+
+WhittedIntegrator::~WhittedIntegrator() = default;
 
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
                             SampleRays& spent, ShadowCache* shadows) const {
@@ -52,7 +54,7 @@ Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHi
     const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
     if (shadows) shadows->prepare(m_scene.lights.size(), m_options.maxDepth);
     TraceState state{counters, shadows, spent};
-    return (this->*m_kernel)(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first);
+    return (this->*m_kernel)(cameraRay, tNear, state, first);
 }
 
 bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
@@ -68,7 +70,15 @@ bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
 }
 
 template <unsigned E>
-Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material& m,
+Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& state,
+                               FirstHit* first) const {
+    Footprint<E> footprint{};
+    if constexpr (textured(E)) footprint = m_textures->cameraFootprint(cameraRay);
+    return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, footprint);
+}
+
+template <unsigned E>
+Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
                                     int depth, TraceState& state) const {
     // Radiance saturates at the largest double (shading/radiance_range.h):
@@ -128,18 +138,35 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const Material
 
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, TraceState& state, FirstHit* first) const {
+                               double weight, TraceState& state, FirstHit* first,
+                               const Footprint<E>& footprint) const {
     state.counters.count(type, depth);
     ++state.spent.traced;
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) state.counters.cameraHits++;
 
-    const SurfaceInteraction si = m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect);
-    const Material& m = m_scene.materials[si.material];
-    // Normals on the side the ray arrives from; `entering` is false when the
-    // ray is inside the object (it hit the back of the outward normal).
+    SurfaceInteraction si = m_scene.surfaceAt(
+        ray, *hit, m_options.accelOptions.intersect,
+        textured(E) ? SurfaceDetail::Complete : SurfaceDetail::Normals);
+    // `entering` is false when the ray is inside the object (it hit the back
+    // of the outward normal).
     const bool entering = si.frontFace;
+    const SurfaceOptics* optics = &m_scene.materials[si.material];
+    [[maybe_unused]] HitFootprintOf<E> hitFootprint{};
+    [[maybe_unused]] SurfaceOptics texturedOptics;
+    if constexpr (textured(E)) {
+        // Untextured materials pass the footprint on too (a plain mirror
+        // showing a textured object).
+        hitFootprint = m_textures->atHit(footprint, ray, si.t, si, entering);
+        const Material& material = m_scene.materials[si.material];
+        if (material.maps.any()) {
+            texturedOptics = m_textures->shade(material, si, hitFootprint);
+            optics = &texturedOptics;
+        }
+    }
+    const SurfaceOptics& m = *optics;
+    // Normals on the side the ray arrives from.
     const Vec3 n = entering ? si.ns : -si.ns;
     const Vec3 ng = entering ? si.ng : -si.ng;
     const Vec3 dir = normalize(ray.d);
@@ -175,8 +202,12 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                     const double w = saturated(weight * m.kt.maxComponent());
                     if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(state.spent)) {
                         const SpawnedRay r = spawn(*t);
+                        Footprint<E> next{};
+                        if constexpr (textured(E))
+                            next = m_textures->refracted(footprint, hitFootprint, dir, n, *t,
+                                                         etaI / etaT);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  state, nullptr);
+                                                  state, nullptr, next);
                     }
                 } else {
                     reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
@@ -190,8 +221,11 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 mayBranch(state.spent)) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
+                Footprint<E> next{};
+                if constexpr (textured(E))
+                    next = m_textures->reflected(footprint, hitFootprint, dir, n);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   state, nullptr);
+                                                   state, nullptr, next);
             }
         }
     }

@@ -5,6 +5,9 @@
 // (template over EffectBits) and dispatched once per render.
 
 #include <limits>
+#include <memory>
+#include <type_traits>
+#include <utility>
 
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
@@ -12,6 +15,7 @@
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
+#include "renderer/texture_shading.h"
 #include "renderer/shadow_cache.h"
 
 namespace raylab {
@@ -21,9 +25,12 @@ struct FirstHit {
     bool hit = false;
     float distance = std::numeric_limits<float>::infinity();  ///< from the eye, along the ray
     Vec3 normal;       ///< world shading normal (outward)
-    Color albedo;      ///< diffuse reflectance kd
+    Color albedo;      ///< diffuse reflectance kd (textured where kd has a texture)
     float objectId = -1;
 };
+
+/// What an untextured kernel carries instead of a footprint: nothing.
+struct NoFootprint {};
 
 /// What one camera sample spent: the rays it traced (every type) and whether
 /// the per-sample cap (RenderOptions::maxRaysPerSample) refused it a
@@ -37,6 +44,7 @@ class WhittedIntegrator {
 public:
     WhittedIntegrator(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                       const EffectSet& effects);
+    ~WhittedIntegrator();
 
     /// Radiance along a camera ray. Counts rays into `counters` and into
     /// `spent` (this sample alone); fills `first` (may be null) with the first
@@ -55,18 +63,29 @@ private:
         SampleRays& spent;  ///< this sample's rays, for the per-sample cap
     };
 
+    static constexpr bool textured(unsigned E) { return (E & kTextures) != 0; }
+    /// A ray's footprint in kernels with textures, nothing in the others.
+    template <unsigned E>
+    using Footprint = std::conditional_t<textured(E), RayFootprint, NoFootprint>;
+    template <unsigned E>
+    using HitFootprintOf = std::conditional_t<textured(E), HitFootprint, NoFootprint>;
+
+    template <unsigned E>
+    Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                TraceState& state, FirstHit* first) const;
+                TraceState& state, FirstHit* first, const Footprint<E>& footprint) const;
     template <unsigned E>
-    Color shadeLocal(const SurfaceInteraction& si, const Material& m, const Vec3& n,
+    Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      TraceState& state) const;
     /// Whether the sample may trace one more reflection or refraction ray.
     bool mayBranch(SampleRays& spent) const;
 
-    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, int, RayType, double,
-                                                TraceState&, FirstHit*) const;
+    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, TraceState&, FirstHit*) const;
+    /// One kernel per effect combination: entry i is start<i>.
+    template <unsigned... E>
+    static constexpr auto kernelTable(std::integer_sequence<unsigned, E...>);
 
     const Scene& m_scene;
     const Accelerator& m_accel;
@@ -74,6 +93,7 @@ private:
     EffectSet m_effects;
     bool m_prune = true;  ///< skip zero-weight rays (off for the general kernel and SPD)
     Kernel m_kernel = nullptr;
+    std::unique_ptr<TextureShading> m_textures;  ///< only when the scene has textures
 };
 
 }  // namespace raylab

@@ -15,6 +15,7 @@ required=(
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview
   python3               # scripts/spd (SPD generators, NFF -> POV-Ray) and their tests
+  libopenimageio-dev    # OpenImageIO: texture images (PNG, JPEG, TGA, TIFF, BMP, HDR, EXR) and filtered lookups
 )
 optional=(
   clang libclang-rt-14-dev  # libFuzzer targets (make fuzz)

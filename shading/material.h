@@ -1,6 +1,7 @@
 #pragma once
 // Whitted material: plain data, no behaviour.
 
+#include <cstdint>
 #include <string>
 
 #include "shading/color.h"
@@ -13,8 +14,9 @@ enum class Highlight {
     Phong,       ///< (R·V)^s: NFF/SPD scenes
 };
 
-struct Material {
-    std::string name;
+/// The optical values shading reads at one surface point: a material's
+/// constants, or (textured materials) their product with its textures there.
+struct SurfaceOptics {
     Color ka{0, 0, 0};       ///< ambient reflectance (multiplies the scene ambient Ia)
     Color kd{0.8, 0.8, 0.8}; ///< Lambert diffuse reflectance
     Color ks{0, 0, 0};       ///< specular (highlight) reflectance
@@ -27,6 +29,28 @@ struct Material {
     bool reflective() const { return !km.isBlack(); }
     bool transmissive() const { return !kt.isBlack(); }
     bool hasLocalShading() const { return !kd.isBlack() || !ks.isBlack(); }
+};
+
+/// A material's textures: indices into Scene::textures, kNone where a value
+/// is constant. A colour map multiplies its constant (MTL: map_Kd × Kd);
+/// shininess likewise. docs/scene-format.md lists the JSON and MTL keys.
+struct MaterialMaps {
+    static constexpr uint32_t kNone = 0xFFFFFFFFu;
+    uint32_t ka = kNone, kd = kNone, ks = kNone, km = kNone, kt = kNone;
+    uint32_t shininess = kNone;  ///< scalar map multiplying the exponent (map_Ns)
+    uint32_t bump = kNone;       ///< scalar height map (bump, map_bump)
+    double bumpScale = 1;        ///< height = bumpScale × map value, in scene units (-bm)
+    uint32_t normal = kNone;     ///< tangent-space normal map (norm)
+
+    bool any() const {
+        return ka != kNone || kd != kNone || ks != kNone || km != kNone || kt != kNone ||
+               shininess != kNone || bump != kNone || normal != kNone;
+    }
+};
+
+struct Material : SurfaceOptics {
+    std::string name;
+    MaterialMaps maps;
 };
 
 }  // namespace raylab

@@ -17,6 +17,7 @@
 #include "renderer/io/json_shapes.h"
 #include "renderer/io/obj_loader.h"
 #include "renderer/io/scene_loader.h"
+#include "renderer/io/json_textures.h"
 #include "renderer/io/shape_factory.h"
 #include "renderer/io/text_file.h"
 #include "renderer/render_option_names.h"
@@ -35,6 +36,7 @@ public:
 
 private:
     Scene m_scene;
+    TextureLibrary m_textureFiles;  ///< every texture file read once, shared with the meshes' MTLs
     std::map<std::string, uint32_t> m_materialIndex;
     std::optional<uint32_t> m_defaultMaterial;
 
@@ -108,7 +110,8 @@ void SceneReader::readImage(const JsonValue& v, const std::string& path) {
 void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "the render settings",
                        {"adaptive", "adaptive_levels", "min_weight", "seed", "max_rays", "precision",
-                        "epsilon", "bvh_quality", "robust", "accel", "shadows"});
+                        "epsilon", "bvh_quality", "robust", "accel", "shadows", "texture_filter",
+                        "texture_footprint"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -134,6 +137,10 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));
     if (const JsonValue* x = f.get("accel"))
         r.accel = choice(*x, f.path("accel"), acceleratorNames());
+    if (const JsonValue* x = f.get("texture_filter"))
+        r.textureFilter = choice(*x, f.path("texture_filter"), textureFilterNames());
+    if (const JsonValue* x = f.get("texture_footprint"))
+        r.textureFootprint = choice(*x, f.path("texture_footprint"), textureFootprintNames());
 }
 
 void SceneReader::readCamera(const JsonValue& v, const std::string& path) {
@@ -238,19 +245,48 @@ void SceneReader::readMaterials(const JsonValue& v, const std::string& path) {
 
 Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "a material",
-                       {"ka", "kd", "ks", "shininess", "highlight", "km", "kt", "ior"});
+                       {"ka", "kd", "ks", "shininess", "highlight", "km", "kt", "ior", "bump",
+                        "normal_map"});
     Material m;
-    if (const JsonValue* x = f.get("ka")) m.ka = color(*x, f.path("ka"));
-    if (const JsonValue* x = f.get("kd")) m.kd = color(*x, f.path("kd"));
-    if (const JsonValue* x = f.get("ks")) m.ks = color(*x, f.path("ks"));
+    // A colour is a value or a texture ({"texture": ...} or {"checker": ...}),
+    // which then stands for the whole colour (its constant is 1).
+    const auto colourOrTexture = [&](const char* key, Color& c, uint32_t& map) {
+        const JsonValue* x = f.get(key);
+        if (!x) return;
+        if (!x->isObject()) {
+            c = color(*x, f.path(key));
+            return;
+        }
+        const JsonTexture t = readJsonTexture(*this, *x, f.path(key), JsonTextureUse::Colour,
+                                              m_textureFiles, m_scene.textures);
+        c = Color(1);
+        if (t.present) map = t.index;
+    };
+    colourOrTexture("ka", m.ka, m.maps.ka);
+    colourOrTexture("kd", m.kd, m.maps.kd);
+    colourOrTexture("ks", m.ks, m.maps.ks);
     if (const JsonValue* x = f.get("shininess")) m.shininess = nonNegative(*x, f.path("shininess"));
     if (const JsonValue* x = f.get("highlight"))
         m.highlight = choice<Highlight>(
             *x, f.path("highlight"),
             {{"blinn-phong", Highlight::BlinnPhong}, {"phong", Highlight::Phong}});
-    if (const JsonValue* x = f.get("km")) m.km = color(*x, f.path("km"));
-    if (const JsonValue* x = f.get("kt")) m.kt = color(*x, f.path("kt"));
+    colourOrTexture("km", m.km, m.maps.km);
+    colourOrTexture("kt", m.kt, m.maps.kt);
     if (const JsonValue* x = f.get("ior")) m.ior = positive(*x, f.path("ior"));
+    if (const JsonValue* x = f.get("bump")) {
+        const JsonTexture t = readJsonTexture(*this, *x, f.path("bump"), JsonTextureUse::Bump,
+                                              m_textureFiles, m_scene.textures);
+        if (t.present) {
+            m.maps.bump = t.index;
+            m.maps.bumpScale = t.height;
+        }
+    }
+    if (const JsonValue* x = f.get("normal_map")) {
+        const JsonTexture t = readJsonTexture(*this, *x, f.path("normal_map"),
+                                              JsonTextureUse::NormalMap, m_textureFiles,
+                                              m_scene.textures);
+        if (t.present) m.maps.normal = t.index;
+    }
     return m;
 }
 
@@ -408,6 +444,7 @@ void SceneReader::readMeshFile(const JsonFields& f, const std::string& name) {
     const std::string& file = string(fileValue, f.path("file"));
     if (file.empty()) fail(fileValue, f.path("file"), "must not be empty");
     ObjLoadOptions options;
+    options.textureFiles = &m_textureFiles;  // files shared with the JSON materials
     if (const JsonValue* t = f.get("transform"))
         options.transform = readTransform(*t, f.path("transform"));
     if (const JsonValue* n = f.get("normals"))

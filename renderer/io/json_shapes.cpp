@@ -20,7 +20,10 @@ auto build(const JsonFieldReader& in, const JsonFields& f, Factory&& factory) {
 std::unique_ptr<Shape> readSphere(const JsonFieldReader& in, const JsonFields& f) {
     const Vec3 centre = in.vec3(f.need("center"), f.path("center"));
     const double radius = in.positive(f.need("radius"), f.path("radius"));
-    return build(in, f, [&] { return makeSphere(centre, radius); });
+    // The pole orients the sphere's (u, v): +y (the default up) unless given.
+    const Vec3 pole = f.has("pole") ? normalize(in.direction(*f.get("pole"), f.path("pole")))
+                                    : Vec3{0, 1, 0};
+    return build(in, f, [&] { return makeSphere(centre, radius, pole); });
 }
 
 std::unique_ptr<Shape> readPlane(const JsonFieldReader& in, const JsonFields& f) {
@@ -155,7 +158,7 @@ std::unique_ptr<Shape> readPolygon(const JsonFieldReader& in, const JsonFields& 
 
 const std::vector<std::string>* analyticShapeKeys(const std::string& type) {
     static const std::map<std::string, std::vector<std::string>> kKeys = {
-        {"sphere", {"center", "radius"}},
+        {"sphere", {"center", "radius", "pole"}},
         {"plane", {"point", "normal", "half_extent"}},
         {"disk", {"center", "normal", "radius"}},
         {"cylinder", {"base", "apex", "radius", "base_radius", "apex_radius", "caps"}},

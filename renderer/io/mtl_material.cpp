@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "renderer/io/mtl_textures.h"
+
 namespace raylab {
 
 namespace {
@@ -67,10 +69,13 @@ Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
     }
     if (m.ke.given() && !m.ke.value.isBlack())
         note(m.ke.line, "'Ke' (emission) is not simulated by raylab; ignored");
+    // Colour, exponent, bump and normal maps are read by mtl_textures.cpp.
     for (const MtlTexture& t : m.textures)
-        warn.add("material '" + m.name + "': texture maps are not supported and are ignored (" +
-                     t.keyword + " " + t.file + ")",
-                 t.line, m.file, "texture maps");
+        if (!isSupportedMtlMap(t.keyword))
+            warn.add("material '" + m.name + "': texture maps other than map_Kd, map_Ka, map_Ks, "
+                         "map_Ns, bump and norm are not supported and are ignored (" +
+                         t.keyword + " " + t.file + ")",
+                     t.line, m.file, "texture maps");
     return out;
 }
 

@@ -10,9 +10,10 @@
 //          other values -> 2.
 //   d < 1 in any other model: dissolve, transmission without refraction
 //   (ka, kd, ks, km scaled by d, kt = 1 - d, ior 1).
-//   Ns < 1: no highlight (ks = 0). Ke, Tf outside illum 6/7 and texture maps:
-//   warned about (once per library), ignored.
-// This is the one place a new MTL statement (a texture) turns into material data.
+//   Ns < 1: no highlight (ks = 0). Ke, Tf outside illum 6/7 and texture maps
+//   other than those mtl_textures.h reads (map_d, disp, refl, ...): warned
+//   about (once per library), ignored.
+// Texture maps become material data in mtl_textures.h.
 
 #include "renderer/io/load_warnings.h"
 #include "renderer/io/mtl_reader.h"

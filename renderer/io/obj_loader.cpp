@@ -22,6 +22,7 @@
 #include "renderer/io/load_warnings.h"
 #include "renderer/io/loading_file.h"
 #include "renderer/io/obj_materials.h"
+#include "renderer/io/mtl_textures.h"
 #include "renderer/io/obj_parser.h"
 #include "renderer/io/text_file.h"
 #include "renderer/io/wavefront_text.h"
@@ -527,6 +528,13 @@ ObjModel loadObj(const std::string& path, const ObjLoadOptions& options) {
                                "corners once the scene's transform (scale, rotate) is applied");
     model.materials = std::move(mats.materials);
     model.mtlStatements = std::move(mats.statements);
+    // Texture maps (issue 18): read after the materials, so a library's
+    // warnings come in statement order per material.
+    TextureLibrary ownTextureFiles;
+    TextureLibrary& textureFiles = options.textureFiles ? *options.textureFiles : ownTextureFiles;
+    for (size_t i = 0; i < model.mtlStatements.size(); ++i)
+        applyMtlTextures(model.mtlStatements[i], model.materials[i], model.textures, textureFiles,
+                         warn);
     if (builder.usesDefaultMaterial()) {
         // Grey, lit by the ambient term too, so a bare OBJ is readable.
         Material def;
@@ -546,9 +554,16 @@ void appendObjModel(Scene& scene, const ObjModel& model, const std::string& base
                     std::optional<uint32_t> overrideMaterial) {
     const uint32_t firstMaterial = uint32_t(scene.materials.size());
     if (!overrideMaterial) {
+        const uint32_t firstTexture = uint32_t(scene.textures.size());
+        scene.textures.insert(scene.textures.end(), model.textures.begin(), model.textures.end());
         for (const Material& m : model.materials) {
             scene.materials.push_back(m);
-            scene.materials.back().name = baseName + "/" + m.name;
+            Material& added = scene.materials.back();
+            added.name = baseName + "/" + m.name;
+            for (uint32_t* map : {&added.maps.ka, &added.maps.kd, &added.maps.ks, &added.maps.km,
+                                  &added.maps.kt, &added.maps.shininess, &added.maps.bump,
+                                  &added.maps.normal})
+                if (*map != MaterialMaps::kNone) *map += firstTexture;
         }
     }
     for (size_t i = 0; i < model.parts.size(); ++i) {

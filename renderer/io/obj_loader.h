@@ -14,7 +14,9 @@
 #include "geometry/transform.h"
 #include "geometry/triangle_mesh.h"
 #include "renderer/io/mtl_reader.h"
+#include "renderer/io/texture_library.h"
 #include "shading/material.h"
+#include "shading/texture.h"
 
 namespace raylab {
 
@@ -45,6 +47,8 @@ struct ObjModel {
     /// What the MTL statements of materials[i] said (the default has none):
     /// texture maps and their files, for image textures.
     std::vector<MtlMaterial> mtlStatements;
+    /// The textures of the MTL maps (map_Kd, bump, ...); materials' maps index this list.
+    std::vector<Texture> textures;
     std::vector<std::string> warnings;  ///< each once, repeats counted
     ObjLoadCounts counts;
     size_t triangleCount() const;
@@ -61,6 +65,8 @@ struct ObjLoadOptions {
     Transform transform;        ///< applied to positions (and normals) on load
     ObjNormals normals = ObjNormals::File;
     bool printWarnings = true;  ///< print each warning as "raylab: warning: FILE: ..." to stderr
+    /// Where texture files are read and shared (a scene's); null: the load's own.
+    TextureLibrary* textureFiles = nullptr;
 };
 
 /// Reads an OBJ file (and the MTL libraries it names, relative to the OBJ's
@@ -73,7 +79,8 @@ struct ObjLoadOptions {
 /// material name is only a warning.
 ObjModel loadObj(const std::string& path, const ObjLoadOptions& options = {});
 
-/// Appends the model's materials and one Object per part to `scene`. With
+/// Appends the model's materials (their textures too, map indices offset
+/// past the scene's) and one Object per part to `scene`. With
 /// `overrideMaterial` (an index into scene.materials) the OBJ materials are
 /// not added and every face uses that material. Object names are
 /// `baseName`, or `baseName` + " (flat)" for the flat part when both exist.

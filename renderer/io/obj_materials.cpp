@@ -100,14 +100,14 @@ private:
         }
     }
 
-    /// Texture files are named relative to their library (issue 18 reads them).
+    /// Texture files are named relative to their library; mtl_textures.cpp reads them.
     void findTextures(MtlMaterial& m, const std::string& libraryPath) {
         for (MtlTexture& t : m.textures) {
             const std::string path = resolveRelativeTo(libraryPath, t.file);
             const std::optional<FoundFile> found = m_finder.find(path);
             if (!found) {
-                m_warn.add("texture '" + t.file + "' not found beside the library", t.line,
-                           libraryPath, "missing textures");
+                // Reported where the map is read (mtl_textures.cpp): one
+                // warning per missing file, naming the statement's line.
                 t.file = path;
                 continue;
             }

@@ -49,7 +49,7 @@ std::vector<std::pair<std::string, char>> optionLines(const std::string& help) {
 std::vector<const CommandFlags*> allCommands() {
     return {&raylab::kRenderFlags,      &raylab::kAccuracyFlags,    &raylab::kCompareFlags,
             &raylab::kBenchAccelFlags,  &raylab::kBenchLimitFlags,  &raylab::kBenchEffectsFlags,
-            &raylab::kBenchPrimitivesFlags, &raylab::kBenchIngestFlags};
+            &raylab::kBenchPrimitivesFlags, &raylab::kBenchTexturesFlags, &raylab::kBenchIngestFlags};
 }
 
 }  // namespace

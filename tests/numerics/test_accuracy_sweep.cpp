@@ -104,9 +104,11 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
     CHECK(d.flags() ==
           "--spp 1 --depth 5 --precision double --bvh-quality medium --shadows filtered");
     CHECK(referenceAccuracySetting(64).flags() ==
-          "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered");
-    for (bool quick : {false, true}) {
-        const auto settings = accuracySweepSettings(quick);
+          "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered "
+          "--texture-filter point --texture-footprint differentials");
+    for (const auto& [quick, textured] : {std::pair{false, false}, std::pair{true, false},
+                                          std::pair{false, true}}) {
+        const auto settings = accuracySweepSettings(quick, textured);
         const auto knobs = accuracyKnobNames();
         std::set<std::string> names;
         for (const AccuracySetting& s : settings) {
@@ -124,6 +126,10 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
             if (s.offset != d.offset || s.epsilon != d.epsilon) diff.insert("offset");
             if (s.quality != d.quality || s.robust != d.robust) diff.insert("bvh");
             if (s.shadows != d.shadows) diff.insert("shadows");
+            if (s.textures.filter != d.textures.filter ||
+                s.textures.footprint != d.textures.footprint)
+                diff.insert("texture");
+            CHECK((s.knob == "texture") <= textured);
             if (s.knob == "default")
                 CHECK(diff.empty());
             else if (s.knob == "combo")
@@ -135,6 +141,11 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
         }
         CHECK(settings.front().knob == "default");
         CHECK(settings.size() >= (quick ? 10u : 25u));
+        // Point, bilinear, and the two footprints of the other filter than
+        // the default's, plus the default filter's other footprint: 5 rows.
+        const auto textureRows = std::count_if(settings.begin(), settings.end(),
+                                               [](const AccuracySetting& s) { return s.knob == "texture"; });
+        CHECK(textureRows == (textured ? 5 : 0));
     }
 }
 

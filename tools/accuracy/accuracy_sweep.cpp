@@ -84,6 +84,8 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     ov.precision = s.precision;
     if (s.offset == OffsetMode::FixedEpsilon) ov.epsilon = s.epsilon;
     ov.shadows = s.shadows;
+    ov.textureFilter = s.textures.filter;
+    ov.textureFootprint = s.textures.footprint;
     const RenderOptions options = resolveRenderOptions(scene, ov);
 
     Rendered out;
@@ -117,6 +119,12 @@ bool sameRgba(const Film& a, const Film& b) {
 
 }  // namespace
 
+bool hasTextures(const Scene& scene) {
+    for (const Material& m : scene.materials)
+        if (m.maps.any()) return true;
+    return false;
+}
+
 std::string AccuracySetting::flags() const {
     std::string f;
     if (adaptiveThreshold > 0)
@@ -131,6 +139,10 @@ std::string AccuracySetting::flags() const {
     f += std::string(" --bvh-quality ") + bvhQualityName(quality);
     if (robust) f += " --robust";
     f += std::string(" --shadows ") + shadowModeName(shadows);
+    const TextureOptions defaults;
+    if (textures.filter != defaults.filter || textures.footprint != defaults.footprint)
+        f += std::string(" --texture-filter ") + textureFilterName(textures.filter) +
+             " --texture-footprint " + textureFootprintName(textures.footprint);
     return f;
 }
 
@@ -141,15 +153,16 @@ AccuracySetting referenceAccuracySetting(int spp) {
     s.spp = spp;
     s.maxDepth = 12;
     s.robust = true;
+    s.textures.filter = TextureFilter::Point;
     return named(s, "reference", "reference (" + std::to_string(spp) + " spp)");
 }
 
 std::vector<std::string> accuracyKnobNames() {
-    return {"default",   "spp",    "adaptive", "depth", "min-weight",
-            "precision", "offset", "bvh",      "shadows", "combo"};
+    return {"default",   "spp",    "adaptive", "depth",   "min-weight", "precision",
+            "offset",    "bvh",    "shadows",  "texture", "combo"};
 }
 
-std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
+std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured) {
     const AccuracySetting d = defaultAccuracySetting();
     std::vector<AccuracySetting> v{d};
     const auto add = [&](const char* knob, const std::string& name, auto&& change) {
@@ -208,6 +221,23 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick) {
     // The classic Whitted shadow: every transmitter blocks its light (only
     // scenes with transmitters differ; the reference dims it by their kt).
     add("shadows", "opaque shadows", [](AccuracySetting& s) { s.shadows = ShadowMode::Opaque; });
+    if (textured) {
+        // Every filter with every footprint (the footprint-free filters once).
+        const TextureOptions defaults;
+        for (TextureFilter f : {TextureFilter::Point, TextureFilter::Bilinear, TextureFilter::Trilinear,
+                                TextureFilter::Anisotropic})
+            for (TextureFootprint fp : {TextureFootprint::Cones, TextureFootprint::Differentials}) {
+                if (!usesFootprint(f) && fp != defaults.footprint) continue;
+                if (f == defaults.filter && fp == defaults.footprint) continue;
+                std::string name = std::string("texture ") + textureFilterName(f);
+                if (usesFootprint(f)) name += std::string(", ") + textureFootprintName(fp);
+                add("texture", name, [f, fp](AccuracySetting& s) {
+                    s.textures.filter = f;
+                    s.textures.footprint = fp;
+                });
+            }
+    }
+
     add("combo", "preview: depth 2, float, bvh low", [](AccuracySetting& s) {
         s.maxDepth = 2;
         s.precision = Precision::Float;
@@ -280,7 +310,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     if (options.referenceSpp < 1)
         throw std::invalid_argument("accuracy: reference spp must be >= 1");
     const std::vector<AccuracySetting> settings =
-        options.settings.empty() ? accuracySweepSettings(false) : options.settings;
+        options.settings.empty() ? accuracySweepSettings(false, hasTextures(scene)) : options.settings;
 
     AccuracyReport report;
     report.scene = scenePath;

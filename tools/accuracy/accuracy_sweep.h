@@ -17,6 +17,7 @@
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/film.h"
+#include "renderer/texture_options.h"
 #include "renderer/scene.h"
 #include "renderer/shadow_mode.h"
 
@@ -39,6 +40,7 @@ struct AccuracySetting {
     AccelOptions::BvhQuality quality = AccelOptions::BvhQuality::Medium;
     bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST
     ShadowMode shadows = ShadowMode::Filtered;  ///< feelers through transmitters (or blocked)
+    TextureOptions textures;  ///< texture filter and footprint (textured scenes)
 
     /// The equivalent `raylab render` flags ("--spp 4 --depth 5 ...", every knob).
     std::string flags() const;
@@ -49,12 +51,18 @@ struct AccuracySetting {
 AccuracySetting defaultAccuracySetting();
 
 /// \brief The reference: `spp` stratified jittered samples per pixel, depth
-///   12, double precision, robust Embree traversal, robust offset, no pruning.
+///   12, double precision, robust Embree traversal, robust offset, no pruning,
+///   point-sampled textures (the samples themselves do the filtering).
 AccuracySetting referenceAccuracySetting(int spp);
 
 /// \brief The settings swept: the default, each knob varied alone from the
 ///   default, and a few combinations. `quick` keeps a handful (smoke runs).
-std::vector<AccuracySetting> accuracySweepSettings(bool quick);
+///   `textured` adds the "texture" group: every texture filter and footprint.
+std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured = false);
+
+/// Whether some material of the scene has a texture (the sweep then has a
+/// "texture" group).
+bool hasTextures(const Scene& scene);
 
 /// The knob group names accuracySweepSettings uses, in table order.
 std::vector<std::string> accuracyKnobNames();

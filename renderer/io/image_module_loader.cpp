@@ -1,0 +1,172 @@
+#include "renderer/io/image_module_loader.h"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+namespace {
+
+constexpr const char* kModuleName = "raylab-openimageio.so";
+constexpr const char* kProbeName = "raylab-openimageio-probe";
+/// Address space kept free beyond what the probe measured.
+constexpr double kProbeMargin = 64.0 * (1 << 20);
+
+extern "C" char** environ;
+
+/// The executable's folder, where an installed or copied raylab keeps the module.
+std::string executableFolder() {
+    char buffer[PATH_MAX];
+    const ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof buffer - 1);
+    if (n <= 0) return {};
+    std::string path(buffer, size_t(n));
+    const size_t slash = path.rfind('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+std::string describeMiB(double bytes) {
+    return std::to_string(int64_t(bytes / (1 << 20))) + " MiB";
+}
+
+/// This process's address space in use (/proc/self/statm).
+double addressSpaceInUse() {
+    std::FILE* f = std::fopen("/proc/self/statm", "r");
+    if (!f) return 0;
+    double pages = 0;
+    if (std::fscanf(f, "%lf", &pages) != 1) pages = 0;
+    std::fclose(f);
+    return pages * double(::sysconf(_SC_PAGESIZE));
+}
+
+/// Runs the probe (image_module_probe.cpp) on `module` and `image`; the
+/// address space the module took there, or nullopt if the probe failed or
+/// crashed (its stderr is discarded: a crash there is the expected case
+/// under a tight limit).
+std::optional<double> probeModuleCost(const std::string& probe, const std::string& module,
+                                      const std::string& image) {
+    int out[2];
+    if (::pipe2(out, O_CLOEXEC) != 0) return std::nullopt;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    std::vector<std::string> args{probe, module, image};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    const int spawned = ::posix_spawn(&pid, probe.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(out[1]);
+    std::string text;
+    if (spawned == 0) {
+        char buffer[64];
+        ssize_t n;
+        while ((n = ::read(out[0], buffer, sizeof buffer)) > 0 ||
+               (n < 0 && errno == EINTR))
+            if (n > 0) text.append(buffer, size_t(n));
+    }
+    ::close(out[0]);
+    if (spawned != 0) return std::nullopt;
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
+    char* end = nullptr;
+    const double bytes = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || !(bytes >= 0)) return std::nullopt;
+    return bytes;
+}
+
+/// Under a finite `ulimit -v`, OpenImageIO's library constructors crash
+/// (they do not fail) when the address space runs out inside dlopen. So
+/// the cost is measured first, in a probe process that may crash, and the
+/// module is loaded only if it fits beside what this process maps already.
+/// Why not, or nullopt when it may be loaded.
+std::optional<std::string> addressSpaceRefusal(const std::string& module,
+                                               const std::string& image) {
+    struct rlimit as {};
+    if (::getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY) return std::nullopt;
+    const double limit = double(as.rlim_cur);
+    const std::string where = "the address-space limit (ulimit -v) of " + describeMiB(limit);
+    const std::string probe = module.substr(0, module.rfind('/') + 1) + kProbeName;
+    const std::optional<double> cost = probeModuleCost(probe, module, image);
+    if (!cost) return "it does not load within " + where;
+    const double inUse = addressSpaceInUse();
+    if (inUse + *cost + kProbeMargin > limit)
+        return "it needs about " + describeMiB(*cost) + " of address space, and " + where +
+               " leaves " + describeMiB(std::max(0.0, limit - inUse));
+    return std::nullopt;
+}
+
+struct Loaded {
+    const image_module::Api* api = nullptr;
+    std::string failure;
+};
+
+std::atomic<bool> g_loaded{false};
+
+Loaded load(const std::string& image) {
+    std::vector<std::string> candidates;
+    if (std::string folder = executableFolder(); !folder.empty())
+        candidates.push_back(folder + kModuleName);
+#ifdef RAYLAB_IMAGE_MODULE_BUILD_PATH
+    // Test executables live elsewhere in the build tree than the module.
+    candidates.push_back(RAYLAB_IMAGE_MODULE_BUILD_PATH);
+#endif
+    std::string reasons;
+    for (const std::string& path : candidates) {
+        if (::access(path.c_str(), F_OK) != 0) continue;
+        if (const auto refusal = addressSpaceRefusal(path, image)) {
+            reasons = *refusal;
+            break;
+        }
+        // The module is never closed: OpenImageIO keeps threads and caches
+        // until exit.
+        void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) {
+            const char* e = ::dlerror();
+            reasons = e ? e : ("cannot load " + path);
+            continue;
+        }
+        using Entry = const image_module::Api* (*)();
+        auto entry = reinterpret_cast<Entry>(::dlsym(handle, image_module::kEntryPoint));
+        const image_module::Api* api = entry ? entry() : nullptr;
+        if (!api || api->version != image_module::kVersion) {
+            reasons = path + " is not raylab's image module of interface version " +
+                      std::to_string(image_module::kVersion);
+            continue;
+        }
+        g_loaded = true;
+        return {api, {}};
+    }
+    if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
+    return {nullptr, "OpenImageIO is not available (" + reasons + ")"};
+}
+
+}  // namespace
+
+const image_module::Api& imageModule(const std::string& image) {
+    static const Loaded loaded = load(image);
+    if (!loaded.api) throw ImageModuleUnavailable(loaded.failure);
+    return *loaded.api;
+}
+
+bool imageModuleLoaded() { return g_loaded; }
+
+}  // namespace raylab

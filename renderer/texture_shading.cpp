@@ -1,0 +1,88 @@
+#include "renderer/texture_shading.h"
+
+#include <cmath>
+
+#include "shading/material_textures.h"
+#include "shading/normal_mapping.h"
+
+namespace raylab {
+
+TextureShading::TextureShading(const Scene& scene, const RenderOptions& options)
+    : m_scene(scene), m_options(options), m_footprints(usesFootprint(options.textures.filter)) {
+    // A footprint per sample: stratified samples are 1/√spp pixels apart.
+    if (options.spp > 1) m_spacing = 1.0 / std::sqrt(double(options.spp));
+}
+
+RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
+    RayFootprint fp;
+    if (!m_footprints) return fp;
+    const Camera& camera = m_scene.camera;
+    if (m_options.textures.footprint == TextureFootprint::Differentials)
+        fp.differential = camera.differential(cameraRay, m_options.width, m_options.height, m_spacing);
+    else
+        fp.cone = camera.cone(m_options.width, m_options.height, m_spacing);
+    return fp;
+}
+
+HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, double t,
+                                   const SurfaceInteraction& si, bool entering) const {
+    HitFootprint hf;
+    hf.coords.uv = si.uv;
+    if (!m_footprints) return hf;
+    const double len = length(ray.d);
+    const Vec3 d = ray.d / len;
+    if (m_options.textures.footprint == TextureFootprint::Differentials) {
+        transferDifferential(fp.differential, d, t * len, si.ng, hf.dpdx, hf.dpdy);
+    } else {
+        hf.coneWidth = fp.cone.widthAt(t * len);
+        coneFootprint(hf.coneWidth, d, si.ng, si.dpdu, hf.dpdx, hf.dpdy);
+        const double k = meanCurvature(si.dpdu, si.dpdv, si.dndu, si.dndv);
+        hf.curvature = entering ? k : -k;
+    }
+    TextureCoords& tc = hf.coords;
+    surfaceParameterChange(si.dpdu, si.dpdv, hf.dpdx, tc.duvdx.x, tc.duvdx.y);
+    surfaceParameterChange(si.dpdu, si.dpdv, hf.dpdy, tc.duvdy.x, tc.duvdy.y);
+    const double sign = entering ? 1.0 : -1.0;
+    hf.dndx = (si.dndu * tc.duvdx.x + si.dndv * tc.duvdx.y) * sign;
+    hf.dndy = (si.dndu * tc.duvdy.x + si.dndv * tc.duvdy.y) * sign;
+    return hf;
+}
+
+SurfaceOptics TextureShading::shade(const Material& m, SurfaceInteraction& si,
+                                    const HitFootprint& hf) const {
+    const TextureFilter filter = m_options.textures.filter;
+    const MaterialMaps& maps = m.maps;
+    const std::vector<Texture>& textures = m_scene.textures;
+    if (maps.normal != MaterialMaps::kNone)
+        si.ns = normalMappedNormal(si, textures[maps.normal], hf.coords, filter);
+    if (maps.bump != MaterialMaps::kNone)
+        si.ns = bumpedNormal(si, textures[maps.bump], maps.bumpScale, hf.coords, filter);
+    return evaluateOptics(m, textures, hf.coords, filter);
+}
+
+RayFootprint TextureShading::reflected(const RayFootprint& fp, const HitFootprint& hf,
+                                       const Vec3& d, const Vec3& n) const {
+    if (!m_footprints) return fp;
+    RayFootprint out;
+    if (m_options.textures.footprint == TextureFootprint::Differentials)
+        out.differential =
+            reflectDifferential(fp.differential, d, n, hf.dpdx, hf.dpdy, hf.dndx, hf.dndy);
+    else
+        out.cone = reflectCone(fp.cone, hf.coneWidth, hf.curvature);
+    return out;
+}
+
+RayFootprint TextureShading::refracted(const RayFootprint& fp, const HitFootprint& hf,
+                                       const Vec3& d, const Vec3& n, const Vec3& out,
+                                       double eta) const {
+    if (!m_footprints) return fp;
+    RayFootprint r;
+    if (m_options.textures.footprint == TextureFootprint::Differentials)
+        r.differential = refractDifferential(fp.differential, d, n, out, eta, hf.dpdx, hf.dpdy,
+                                             hf.dndx, hf.dndy);
+    else
+        r.cone = refractCone(fp.cone, hf.coneWidth, hf.curvature, eta);
+    return r;
+}
+
+}  // namespace raylab

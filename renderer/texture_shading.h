@@ -1,0 +1,58 @@
+#pragma once
+// What the integrator does at a hit when the scene has textures (the
+// "textures" effect; untextured scenes never construct this): carry each
+// ray's footprint (ray cones or differentials), turn it into the change of
+// (u, v) per sample at the hit, look the material's textures up there and
+// bend the shading normal by bump and normal maps.
+
+#include "renderer/render_options.h"
+#include "renderer/scene.h"
+#include "shading/ray_cone.h"
+#include "shading/ray_differential.h"
+
+namespace raylab {
+
+/// What a ray carries for texture filtering: one of the two, per --texture-footprint.
+struct RayFootprint {
+    RayDifferential differential;
+    RayCone cone;
+};
+
+/// A hit's footprint: where and how wide the textures are looked up, and
+/// what the rays it spawns need.
+struct HitFootprint {
+    TextureCoords coords;   ///< uv and its change per sample
+    Vec3 dpdx, dpdy;        ///< change of the hit point per sample
+    Vec3 dndx, dndy;        ///< change of the arriving-side shading normal
+    double coneWidth = 0;   ///< cones: signed width at the hit
+    double curvature = 0;   ///< cones: mean curvature, > 0 bulging towards the ray
+};
+
+class TextureShading {
+public:
+    TextureShading(const Scene& scene, const RenderOptions& options);
+
+    /// The footprint a camera ray starts with (one sample: 1/√spp pixels).
+    RayFootprint cameraFootprint(const Ray& cameraRay) const;
+    /// The footprint at a hit at parameter t of `ray`; `si` has
+    /// SurfaceDetail::Complete; `entering` as in the integrator.
+    HitFootprint atHit(const RayFootprint& fp, const Ray& ray, double t,
+                       const SurfaceInteraction& si, bool entering) const;
+    /// The material's values at the hit; bends si.ns by its bump or normal map.
+    SurfaceOptics shade(const Material& m, SurfaceInteraction& si, const HitFootprint& hf) const;
+    /// Footprints of the mirror and refracted rays leaving the hit: d the
+    /// unit incoming direction, n the arriving-side shading normal, out the
+    /// new unit direction, eta = etaI / etaT.
+    RayFootprint reflected(const RayFootprint& fp, const HitFootprint& hf, const Vec3& d,
+                           const Vec3& n) const;
+    RayFootprint refracted(const RayFootprint& fp, const HitFootprint& hf, const Vec3& d,
+                           const Vec3& n, const Vec3& out, double eta) const;
+
+private:
+    const Scene& m_scene;
+    RenderOptions m_options;
+    bool m_footprints;     ///< the filter reads footprints (trilinear, anisotropic)
+    double m_spacing = 1;  ///< sample spacing in pixels
+};
+
+}  // namespace raylab

@@ -1,0 +1,246 @@
+// Texture lookups against hand-computed values: sRGB decoding, the exact
+// bilinear weights on a 2x2 image, wrap modes, the v orientation, the MIP
+// pyramid and its level of detail, the box-filtered checkerboard, and bump
+// and normal maps.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "shading/material_textures.h"
+#include "shading/mipmap.h"
+#include "shading/normal_mapping.h"
+#include "shading/srgb.h"
+#include "shading/texture.h"
+
+using namespace raylab;
+
+namespace {
+
+/// A 2x2 single-channel image: a b (top row), c d (bottom row).
+MipMap grey2x2(float a, float b, float c, float d) { return MipMap(2, 2, 1, {a, b, c, d}); }
+
+/// A 2x2 RGB image whose top row is red and bottom row blue.
+std::shared_ptr<const MipMap> redOverBlue() {
+    return std::make_shared<const MipMap>(
+        2, 2, 3, std::vector<float>{1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1});
+}
+
+}  // namespace
+
+TEST_CASE("sRGB: known 8-bit codes decode to their linear values") {
+    // ((c/255 + 0.055) / 1.055)^2.4 above 0.04045, c/255/12.92 below.
+    const float* table = srgb8ToLinearTable();
+    CHECK(table[0] == 0.0f);
+    CHECK(table[255] == 1.0f);
+    CHECK(table[10] == doctest::Approx(0.003035269835488375).epsilon(1e-6));
+    CHECK(table[64] == doctest::Approx(0.05126945837404324).epsilon(1e-6));
+    CHECK(table[128] == doctest::Approx(0.21586050011389926).epsilon(1e-6));
+    CHECK(table[188] == doctest::Approx(0.5028864580325687).epsilon(1e-6));
+    // The round trip is the identity.
+    for (int i = 0; i < 256; i += 17)
+        CHECK(linearToSrgb(srgbToLinear(i / 255.0)) == doctest::Approx(i / 255.0));
+}
+
+TEST_CASE("bilinear on a 2x2 image: exact weights between texel centres") {
+    const MipMap m = grey2x2(0, 1, 2, 3);
+    const WrapMode c = WrapMode::Clamp;
+    // Texel centres at 0.25 and 0.75 return the texels themselves.
+    CHECK(m.bilinear(0, {0.25, 0.25}, c)[0] == 0.0);
+    CHECK(m.bilinear(0, {0.75, 0.25}, c)[0] == 1.0);
+    CHECK(m.bilinear(0, {0.25, 0.75}, c)[0] == 2.0);
+    CHECK(m.bilinear(0, {0.75, 0.75}, c)[0] == 3.0);
+    // The image centre is the mean of all four; a quarter of the way from a
+    // to b weighs them 3:1.
+    CHECK(m.bilinear(0, {0.5, 0.5}, c)[0] == 1.5);
+    CHECK(m.bilinear(0, {0.375, 0.25}, c)[0] == 0.25);
+    // (0.625, 0.375): fx = 0.75, fy = 0.25: 0.75·0.25·... = 0.25·(0.25·0 + 0.75·1)
+    // + ... worked out: top row 0.75, bottom row 2.75, blended 3:1 -> 1.25.
+    CHECK(m.bilinear(0, {0.625, 0.375}, c)[0] == 1.25);
+}
+
+TEST_CASE("wrap modes: repeat tiles, clamp extends the edge, black is zero outside") {
+    const MipMap m = grey2x2(0, 1, 2, 3);
+    // Point lookups one image width to the right.
+    CHECK(m.point({1.25, 0.25}, WrapMode::Repeat)[0] == 0.0);
+    CHECK(m.point({1.25, 0.25}, WrapMode::Clamp)[0] == 1.0);
+    CHECK(m.point({1.25, 0.25}, WrapMode::Black)[0] == 0.0);
+    CHECK(m.point({-0.25, 0.75}, WrapMode::Repeat)[0] == 3.0);
+    CHECK(m.point({-0.25, 0.75}, WrapMode::Clamp)[0] == 2.0);
+    // At the left edge, between texel a (centre 0.25) and its neighbour to
+    // the left: repeat blends a with b, clamp with itself, black with 0.
+    CHECK(m.bilinear(0, {0.0, 0.25}, WrapMode::Repeat)[0] == 0.5);
+    CHECK(m.bilinear(0, {0.0, 0.75}, WrapMode::Repeat)[0] == 2.5);
+    CHECK(m.bilinear(0, {0.0, 0.75}, WrapMode::Clamp)[0] == 2.0);
+    CHECK(m.bilinear(0, {0.0, 0.75}, WrapMode::Black)[0] == 1.0);
+    // Huge and non-finite coordinates stay finite.
+    CHECK(std::isfinite(m.bilinear(0, {1e300, -1e300}, WrapMode::Repeat)[0]));
+    CHECK(std::isfinite(m.bilinear(0, {NAN, 0.5}, WrapMode::Repeat)[0]));
+}
+
+TEST_CASE("v orientation: the image's top row lands at v = 1") {
+    const Texture t = Texture::fromImage(redOverBlue(), "red-over-blue");
+    TextureCoords top, bottom;
+    // The centres of the top-left and bottom-left texels.
+    top.uv = {0.25, 0.75};
+    bottom.uv = {0.25, 0.25};
+    for (TextureFilter f : {TextureFilter::Point, TextureFilter::Bilinear}) {
+        CHECK(t.color(top, f) == Color(1, 0, 0));
+        CHECK(t.color(bottom, f) == Color(0, 0, 1));
+    }
+    // Scale and offset act in uv before the flip: (2u, 2v + 0.5) at v = 0.3 is 1.1,
+    // i.e. 0.1 in the repeated image: blue.
+    Texture scaled = t;
+    scaled.scale = {2, 2};
+    scaled.offset = {0, 0.5};
+    TextureCoords p;
+    p.uv = {0.1, 0.3};
+    CHECK(scaled.color(p, TextureFilter::Point) == Color(0, 0, 1));
+}
+
+TEST_CASE("MIP pyramid: halved levels, box averages, odd sizes round up") {
+    std::vector<float> v(16);
+    for (int i = 0; i < 16; ++i) v[size_t(i)] = float(i);
+    const MipMap m(4, 4, 1, v);
+    REQUIRE(m.levels() == 3);
+    CHECK(m.width(1) == 2);
+    CHECK(m.width(2) == 1);
+    // Level 1 texel (0, 0) averages 0, 1, 4, 5.
+    CHECK(m.texel(1, 0, 0, WrapMode::Clamp)[0] == 2.5);
+    CHECK(m.texel(1, 1, 1, WrapMode::Clamp)[0] == 12.5);
+    CHECK(m.texel(2, 0, 0, WrapMode::Clamp)[0] == 7.5);
+    CHECK(m.bytes() == (16 + 4 + 1) * sizeof(float));
+    // 3x1: level 1 is 2x1, its second texel the last column averaged with itself.
+    const MipMap odd(3, 1, 1, {0, 3, 6});
+    REQUIRE(odd.levels() == 3);
+    CHECK(odd.texel(1, 0, 0, WrapMode::Clamp)[0] == 1.5);
+    CHECK(odd.texel(1, 1, 0, WrapMode::Clamp)[0] == 6.0);
+    CHECK(odd.texel(2, 0, 0, WrapMode::Clamp)[0] == 3.75);
+}
+
+TEST_CASE("level of detail: log2 of texels per step, the longer axis") {
+    const MipMap m(16, 16, 1, std::vector<float>(256, 1.0f));
+    // A step of 1/4 of the image is 4 texels: level 2.
+    CHECK(m.levelOfDetail({0.25, 0}, {0, 0.25}) == doctest::Approx(2.0));
+    CHECK(m.levelOfDetail({0.25, 0}, {0, 0.0625}) == doctest::Approx(2.0));
+    CHECK(m.levelOfDetail({0, 0.125}, {0.03125, 0}) == doctest::Approx(1.0));
+    // A constant image is constant under every filter.
+    const Vec2 st{0.3, 0.7};
+    CHECK(m.trilinear(st, {0.1, 0}, {0, 0.1}, WrapMode::Repeat)[0] == doctest::Approx(1.0));
+    CHECK(m.ewa(st, {0.3, 0.01}, {0.0, 0.02}, WrapMode::Repeat)[0] == doctest::Approx(1.0));
+    CHECK(m.ewa(st, {5, 0}, {0, 5}, WrapMode::Repeat)[0] == doctest::Approx(1.0));
+}
+
+TEST_CASE("trilinear blends the two levels around the footprint") {
+    // 2x2 image 0 1 / 2 3: level 1 is its mean 1.5. A step of 1/√2 image
+    // widths is √2 texels: λ = 0.5, halfway between level 0 and level 1.
+    const MipMap m = grey2x2(0, 1, 2, 3);
+    const double s = std::sqrt(2.0) / 2;  // in [0,1] units: √2 texels of 2
+    const double v = m.trilinear({0.25, 0.25}, {s, 0}, {0, s}, WrapMode::Clamp)[0];
+    CHECK(v == doctest::Approx(0.5 * 0.0 + 0.5 * 1.5));
+}
+
+TEST_CASE("EWA: an elongated footprint averages along its major axis only") {
+    // Columns alternate 0/1; rows are all alike. A footprint long in t and
+    // thin in s sees one column; long in s it sees the average.
+    std::vector<float> v(64 * 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) v[size_t(y * 64 + x)] = float(x % 2);
+    const MipMap m(64, 64, 1, v);
+    const double texel = 1.0 / 64;
+    const Vec2 centreOfColumn1{1.5 * texel, 0.5};
+    const double alongT =
+        m.ewa(centreOfColumn1, {0, 8 * texel}, {0.01 * texel, 0}, WrapMode::Repeat, 64)[0];
+    CHECK(alongT > 0.99);
+    // The default anisotropy limit of 8 widens the minor axis to one texel,
+    // which lets in some of the neighbouring columns.
+    const double clamped =
+        m.ewa(centreOfColumn1, {0, 8 * texel}, {0.01 * texel, 0}, WrapMode::Repeat)[0];
+    CHECK(clamped > 0.6);
+    CHECK(clamped < alongT);
+    const double alongS = m.ewa(centreOfColumn1, {8 * texel, 0}, {0, 1 * texel}, WrapMode::Repeat)[0];
+    CHECK(alongS == doctest::Approx(0.5).epsilon(0.1));
+}
+
+TEST_CASE("checker: squares by parity, box-filtered to the mean under a wide footprint") {
+    const Texture t = Texture::checker(Color(1), Color(0));
+    TextureCoords tc;
+    tc.uv = {0.5, 0.5};
+    CHECK(t.color(tc, TextureFilter::Point) == Color(1));
+    tc.uv = {1.5, 0.5};
+    CHECK(t.color(tc, TextureFilter::Point) == Color(0));
+    tc.uv = {-0.5, 0.5};
+    CHECK(t.color(tc, TextureFilter::Point) == Color(0));
+    tc.uv = {-0.5, -0.5};
+    CHECK(t.color(tc, TextureFilter::Point) == Color(1));
+    // A footprint of one square each way straddles the edge at u = 1: the box
+    // [0.5, 1.5] x [0.25, 0.75] is half even, half odd.
+    tc.uv = {1.0, 0.5};
+    tc.duvdx = {1.0, 0};
+    tc.duvdy = {0, 0.5};
+    CHECK(t.color(tc, TextureFilter::Trilinear).r == doctest::Approx(0.5));
+    // Point sampling ignores the footprint.
+    CHECK(t.color(tc, TextureFilter::Point) == Color(0));
+    // Beyond one square per half-step: the mean.
+    tc.duvdx = {4.0, 0};
+    CHECK(t.color(tc, TextureFilter::Anisotropic).r == doctest::Approx(0.5));
+}
+
+TEST_CASE("textured optics: a colour map multiplies its constant") {
+    std::vector<Texture> textures{Texture::fromImage(redOverBlue(), "rb")};
+    Material m;
+    m.kd = Color(0.5, 0.5, 0.5);
+    m.maps.kd = 0;
+    TextureCoords tc;
+    tc.uv = {0.5, 0.9};
+    const SurfaceOptics o = evaluateOptics(m, textures, tc, TextureFilter::Point);
+    CHECK(o.kd == Color(0.5, 0, 0));
+    CHECK(o.ks == m.ks);
+}
+
+TEST_CASE("normal map: (0.5, 0.5, 1) keeps the normal, red and green tilt towards +u and +v") {
+    SurfaceGeometry sg;
+    sg.ns = {0, 0, 1};
+    sg.dpdu = {2, 0, 0.5};  // not orthogonal to ns: orthogonalised to +x
+    sg.dpdv = {0, -3, 0};   // v runs along -y: green tilts towards -y
+    const auto flat = [](float r, float g, float b) {
+        return Texture::fromImage(std::make_shared<const MipMap>(1, 1, 3, std::vector<float>{r, g, b}), "n");
+    };
+    TextureCoords tc;
+    tc.uv = {0.5, 0.5};
+    const Vec3 same = normalMappedNormal(sg, flat(0.5f, 0.5f, 1.0f), tc, TextureFilter::Point);
+    CHECK(same.z == doctest::Approx(1.0));
+    // rgb (1, 0.5, 0.5) is the tangent-space vector (1, 0, 0): +u = +x.
+    const Vec3 u = normalMappedNormal(sg, flat(1.0f, 0.5f, 0.5f), tc, TextureFilter::Point);
+    CHECK(u.x == doctest::Approx(1.0));
+    // rgb (0.5, 1, 0.5): (0, 1, 0), towards +v = -y.
+    const Vec3 v = normalMappedNormal(sg, flat(0.5f, 1.0f, 0.5f), tc, TextureFilter::Point);
+    CHECK(v.y == doctest::Approx(-1.0));
+    // rgb (0.75, 0.5, 0.75): (0.5, 0, 0.5) normalised: 45° towards +x.
+    const Vec3 d = normalMappedNormal(sg, flat(0.75f, 0.5f, 0.75f), tc, TextureFilter::Point);
+    CHECK(d.x == doctest::Approx(std::sqrt(0.5)));
+    CHECK(d.z == doctest::Approx(std::sqrt(0.5)));
+}
+
+TEST_CASE("bump map: a height ramp in u tilts the normal against the slope") {
+    // Heights 0 and 1 in a 2x1 image, clamped: bilinear between the texel
+    // centres u = 0.25 and 0.75 is h = 2 (u - 0.25), slope 2 per unit u.
+    // Scale 0.5 makes the slope dh/du = 1 on a plane with dp/du = x, dp/dv = y:
+    // dp'/du = (1, 0, 1), dp'/dv = (0, 1, 0), n = (-1, 0, 1)/√2.
+    Texture h = Texture::fromImage(std::make_shared<const MipMap>(2, 1, 1, std::vector<float>{0, 1}), "h");
+    h.wrap = WrapMode::Clamp;
+    SurfaceGeometry sg;
+    sg.ns = {0, 0, 1};
+    sg.dpdu = {1, 0, 0};
+    sg.dpdv = {0, 1, 0};
+    TextureCoords tc;
+    tc.uv = {0.5, 0.5};
+    const Vec3 n = bumpedNormal(sg, h, 0.5, tc, TextureFilter::Bilinear);
+    CHECK(n.x == doctest::Approx(-std::sqrt(0.5)));
+    CHECK(n.y == doctest::Approx(0.0));
+    CHECK(n.z == doctest::Approx(std::sqrt(0.5)));
+    // A flat height field leaves the normal alone.
+    Texture flat = Texture::fromImage(std::make_shared<const MipMap>(1, 1, 1, std::vector<float>{0.7f}), "f");
+    const Vec3 same = bumpedNormal(sg, flat, 3.0, tc, TextureFilter::Point);
+    CHECK(same.z == doctest::Approx(1.0));
+}
