@@ -15,8 +15,10 @@
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
+#include "tools/accuracy/accuracy_html.h"
 #include "tools/accuracy/accuracy_report.h"
 #include "tools/accuracy/accuracy_sweep.h"
+#include "tools/report/html_page.h"
 #include "tools/report/svg_plot.h"
 #include "tools/report/table_format.h"
 
@@ -62,12 +64,35 @@ const char* const kAccuracyHelp =
     "  --quick                 a smoke run of seconds: 11 settings, 80x60, one run\n"
     "  --out FILE              results as CSV (.csv) or JSON (.json)\n"
     "  --plot FILE             SVG plot of RMSE against CPU time per frame, Pareto front marked\n"
-    "  --quiet                 no progress bar and no table\n"
+    "  --html DIR              DIR/index.html: a self-contained page with the reference, every\n"
+    "                          setting's image and false-colour error map, the plot with its\n"
+    "                          Pareto front, the table, and a side-by-side/zoom viewer\n"
+    "  -q, --quiet             no progress bar and no table (the bar is drawn only when stderr\n"
+    "                          is a terminal)\n"
     "\n"
+    "Flags take their value as '--flag value' or '--flag=value'.\n"
     "Exit status 1 when any rendered sample was NaN or Inf (after writing the outputs).\n";
 
+}  // namespace
+
+const CommandFlags kAccuracyFlags{"accuracy", kAccuracyHelp,
+                                  {{"--width", "", true},
+                                   {"--height", "", true},
+                                   {"--runs", "", true},
+                                   {"--threads", "", true},
+                                   {"--reference-spp", "", true},
+                                   {"--visible", "", true},
+                                   {"--knobs", "", true},
+                                   {"--quick", "", false},
+                                   {"--quiet", "-q", false},
+                                   {"--out", "", true},
+                                   {"--plot", "", true},
+                                   {"--html", "", true}}};
+
+namespace {
+
 struct AccuracyCli {
-    std::string scene, out, plot;
+    std::string scene, out, plot, html;
     bool quick = false, quiet = false;
     std::optional<int> width, height, runs, referenceSpp;
     int threads = 0;
@@ -92,13 +117,10 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 AccuracyCli parseAccuracyArgs(const std::vector<std::string>& args) {
     AccuracyCli cli;
-    ArgParser p(args);
+    ArgParser p(args, kAccuracyFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (a == "-h" || a == "--help") {
-            std::fputs(kAccuracyHelp, stdout);
-            std::exit(0);
-        } else if (a == "--width")
+        if (a == "--width")
             cli.width = int(p.integer(a, 1, 8192));
         else if (a == "--height")
             cli.height = int(p.integer(a, 1, 8192));
@@ -120,8 +142,8 @@ AccuracyCli parseAccuracyArgs(const std::vector<std::string>& args) {
             cli.out = p.value(a);
         else if (a == "--plot")
             cli.plot = p.value(a);
-        else if (!a.empty() && a[0] == '-')
-            throw UsageError("unknown option '" + a + "'");
+        else if (a == "--html")
+            cli.html = p.value(a);
         else if (cli.scene.empty())
             cli.scene = a;
         else
@@ -130,6 +152,7 @@ AccuracyCli parseAccuracyArgs(const std::vector<std::string>& args) {
     if (cli.scene.empty())
         throw UsageError("accuracy: missing SCENE (see 'raylab accuracy --help')");
     if (!cli.out.empty()) tableFormatOf(cli.out, "--out");  // reject a bad extension up front
+    if (!cli.html.empty()) checkReportDir(cli.html, "--html");
     const std::vector<std::string> known = accuracyKnobNames();
     for (const std::string& k : cli.knobs) {
         if (std::find(known.begin(), known.end(), k) == known.end()) {
@@ -154,6 +177,7 @@ int accuracyCommand(const std::vector<std::string>& args) {
     options.referenceSpp = cli.referenceSpp.value_or(cli.quick ? 16 : 64);
     options.threads = cli.threads;
     options.visibleLevels = cli.visible;
+    options.keepImages = !cli.html.empty();
     for (AccuracySetting& s : accuracySweepSettings(cli.quick, hasTextures(scene))) {
         const bool wanted =
             cli.knobs.empty() || s.knob == "default" ||
@@ -178,6 +202,10 @@ int accuracyCommand(const std::vector<std::string>& args) {
         writeFileAtomically(cli.out, csv ? accuracyCsv(report) : accuracyJson(report));
     }
     if (!cli.plot.empty()) writeSvgPlot(cli.plot, accuracyPlot(report));
+    if (!cli.html.empty()) {
+        const std::string page = writeHtmlReport(cli.html, accuracyHtml(report));
+        if (!cli.quiet) std::printf("report: %s\n", page.c_str());
+    }
 
     uint64_t nonFinite = report.reference.nonFiniteSamples + report.reference.nonFinitePixels;
     std::string firstBad = nonFinite ? report.reference.setting.name : "";

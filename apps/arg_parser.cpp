@@ -5,7 +5,9 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 
+#include "renderer/io/did_you_mean.h"
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -27,26 +29,78 @@ std::string formatBound(double x) {
 
 }  // namespace
 
-std::string ArgParser::next() { return m_args.at(m_pos++); }
+std::vector<std::string> CommandFlags::names() const {
+    std::vector<std::string> out{"--help"};
+    for (const FlagSpec& f : flags) {
+        out.push_back(f.name);
+        if (!f.shortName.empty()) out.push_back(f.shortName);
+    }
+    return out;
+}
+
+const FlagSpec* CommandFlags::find(const std::string& name) const {
+    for (const FlagSpec& f : flags)
+        if (f.name == name || (!f.shortName.empty() && f.shortName == name)) return &f;
+    return nullptr;
+}
+
+std::string ArgParser::next() {
+    // A value after "=" that the command did not read would be silently lost.
+    if (m_inlineValue) throw std::logic_error("ArgParser: value of '=' form not read");
+    std::string a = m_args.at(m_pos++);
+    if (a.size() < 2 || a[0] != '-') return a;  // a positional argument ("-" included)
+    std::optional<std::string> inlineValue;
+    if (a.compare(0, 2, "--") == 0) {
+        const size_t eq = a.find('=');
+        if (eq != std::string::npos) {
+            inlineValue = a.substr(eq + 1);
+            a.resize(eq);
+        }
+    }
+    if (a == "-h" || a == "--help") {
+        std::fputs(m_flags.help, stdout);
+        std::exit(0);
+    }
+    const FlagSpec* spec = m_flags.find(a);
+    if (!spec)
+        throw UsageError(m_flags.command + ": unknown option '" + a + "'" +
+                         didYouMean(a, m_flags.names()) + " (see 'raylab " + m_flags.command +
+                         " --help')");
+    if (inlineValue && !spec->takesValue)
+        throw UsageError(a + ": takes no value (got '" + a + "=" + *inlineValue + "')");
+    m_inlineValue = std::move(inlineValue);
+    return a;
+}
 
 bool ArgParser::peekFlag() const {
     return !done() && m_args[m_pos].size() > 1 && m_args[m_pos][0] == '-';
 }
 
 std::string ArgParser::value(const std::string& flag) {
-    if (done()) throw UsageError(flag + ": missing value");
     // A flag given twice is almost always a script that appends to a command
     // line: which value wins would be a guess, so neither does.
-    const std::string name = flag == "-o" ? "--output" : flag;  // the one short alias
+    const FlagSpec* spec = m_flags.find(flag);
+    const std::string name = spec ? spec->name : flag;
     for (const std::string& seen : m_seen)
         if (seen == name) throw UsageError(flag + ": given more than once");
     m_seen.push_back(name);
-    return next();
+    if (m_inlineValue) {
+        std::string v = std::move(*m_inlineValue);
+        m_inlineValue.reset();
+        return v;
+    }
+    if (done()) throw UsageError(flag + ": missing value");
+    return m_args.at(m_pos++);
 }
 
 std::string ArgParser::repeatableValue(const std::string& flag) {
+    if (m_inlineValue) {  // "-o=a.exr" style: "--output=a.exr"
+        std::string v = std::move(*m_inlineValue);
+        m_inlineValue.reset();
+        return v;
+    }
     if (done()) throw UsageError(flag + ": missing value");
-    return next();
+    return m_args.at(m_pos++);
 }
 
 long long ArgParser::integer(const std::string& flag, long long lo, long long hi) {

@@ -1,21 +1,49 @@
 #pragma once
 // A small, strict command-line parser: every value is validated, and any
-// problem is a raylab::UsageError (exit code 2) naming the flag.
+// problem is a raylab::UsageError (exit code 2) naming the flag. Each command
+// declares its flags (CommandFlags): the parser accepts "--flag value" and
+// "--flag=value" alike, refuses an unknown flag with a "did you mean" hint,
+// and the tests check that every declared flag is in the command's --help.
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace raylab {
 
+/// One flag of a command: its long name ("--width"), an optional short one
+/// ("-o"), and whether a value follows it.
+struct FlagSpec {
+    std::string name;
+    std::string shortName;
+    bool takesValue = false;
+};
+
+/// What a command accepts: its name as typed after "raylab" ("bench accel"),
+/// its --help text and its flags (-h/--help is implied).
+struct CommandFlags {
+    std::string command;
+    const char* help = "";
+    std::vector<FlagSpec> flags;
+
+    /// Every flag name, long and short, help included (for hints).
+    std::vector<std::string> names() const;
+    const FlagSpec* find(const std::string& name) const;
+};
+
 class ArgParser {
 public:
-    ArgParser(std::vector<std::string> args) : m_args(std::move(args)) {}
+    ArgParser(std::vector<std::string> args, const CommandFlags& flags)
+        : m_args(std::move(args)), m_flags(flags) {}
 
     bool done() const { return m_pos >= m_args.size(); }
-    /// The next argument, consumed.
+    /// The next argument, consumed. A flag comes back as typed without any
+    /// "=value" part (the value is then what value() returns); -h and --help
+    /// print the command's help and exit 0; an undeclared flag is a
+    /// UsageError with a "did you mean" hint.
     std::string next();
     /// True when the next argument looks like a flag ("-x", "--xyz").
     bool peekFlag() const;
@@ -48,8 +76,10 @@ private:
     size_t choiceIndex(const std::string& flag, const std::vector<std::string>& words);
 
     std::vector<std::string> m_args;
+    const CommandFlags& m_flags;
     size_t m_pos = 0;
-    std::vector<std::string> m_seen;  ///< flags whose value was read (-o as --output)
+    std::optional<std::string> m_inlineValue;  ///< the "value" of "--flag=value"
+    std::vector<std::string> m_seen;  ///< flags whose value was read, by long name
 };
 
 }  // namespace raylab

@@ -8,6 +8,7 @@
 
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
+#include "renderer/io/did_you_mean.h"
 #include "renderer/io/errors.h"
 #include "tools/bench/accel_bench.h"
 #include "tools/bench/effects_bench.h"
@@ -59,8 +60,11 @@ const char* const kBenchAccelHelp =
     "  --naive-budget S        longest naive frame in seconds before pixel sampling (default 2)\n"
     "  --out FILE              also write the results as CSV (.csv) or JSON (.json)\n"
     "  --plot FILE.svg         log-log plot: time per ray against primitive count, both back ends\n"
+    "  --html DIR              DIR/index.html: a self-contained page with the plot, the table and\n"
+    "                          each scene's image (Embree and naive side by side, with a zoom)\n"
     "  --quick                 smoke run of about 20 s: small sizes, at most 128x128, 3 runs,\n"
-    "                          0.5 s naive budget\n";
+    "                          0.5 s naive budget\n"
+    "Flags take their value as '--flag value' or '--flag=value'.\n";
 
 const char* const kBenchLimitHelp =
     "usage: raylab bench limit SCENE [options]\n"
@@ -122,21 +126,59 @@ void help(const char* text) {
 
 bool isHelp(const std::string& a) { return a == "-h" || a == "--help"; }
 
+}  // namespace
+
+const CommandFlags kBenchAccelFlags{"bench accel", kBenchAccelHelp,
+                                    {{"--width", "", true},
+                                     {"--height", "", true},
+                                     {"--runs", "", true},
+                                     {"--threads", "", true},
+                                     {"--naive-budget", "", true},
+                                     {"--out", "", true},
+                                     {"--plot", "", true},
+                                     {"--html", "", true},
+                                     {"--quick", "", false}}};
+const CommandFlags kBenchLimitFlags{"bench limit", kBenchLimitHelp,
+                                    {{"--width", "", true},
+                                     {"--height", "", true},
+                                     {"--runs", "", true},
+                                     {"--threads", "", true},
+                                     {"--spd", "", false},
+                                     {"--out", "", true}}};
+const CommandFlags kBenchEffectsFlags{"bench effects", kBenchEffectsHelp,
+                                      {{"--width", "", true},
+                                       {"--height", "", true},
+                                       {"--runs", "", true},
+                                       {"--threads", "", true},
+                                       {"--spd", "", false}}};
+const CommandFlags kBenchPrimitivesFlags{"bench primitives", kBenchPrimitivesHelp,
+                                         {{"--iterations", "", true}}};
+const CommandFlags kBenchTexturesFlags{"bench textures", kBenchTexturesHelp,
+                                       {{"--size", "", true},
+                                        {"--lookups", "", true},
+                                        {"--runs", "", true}}};
+const CommandFlags kBenchIngestFlags{"bench ingest", kBenchIngestHelp,
+                                     {{"--triangles", "", true},
+                                      {"--runs", "", true},
+                                      {"--threads", "", true},
+                                      {"--dir", "", true}}};
+
+namespace {
+
 int benchAccel(const std::vector<std::string>& args) {
     AccelBenchOptions o;
-    ArgParser p(args);
+    ArgParser p(args, kBenchAccelFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchAccelHelp);
-        else if (a == "--width") o.width = int(p.integer(a, 1, 8192));
+        if (a == "--width") o.width = int(p.integer(a, 1, 8192));
         else if (a == "--height") o.height = int(p.integer(a, 1, 8192));
         else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
         else if (a == "--threads") o.threads = int(p.integer(a, 1, 4096));
         else if (a == "--naive-budget") o.naiveBudgetSeconds = p.number(a, 0.001, 1e6);
         else if (a == "--out") o.outPath = p.value(a);
         else if (a == "--plot") o.plotPath = p.value(a);
+        else if (a == "--html") o.htmlDir = p.value(a);
         else if (a == "--quick") o.quick = true;
-        else if (!a.empty() && a[0] == '-') throw UsageError("bench accel: unknown option '" + a + "'");
         else o.sceneFiles.push_back(a);
     }
     return runAccelBench(o, std::cout);
@@ -144,17 +186,15 @@ int benchAccel(const std::vector<std::string>& args) {
 
 int benchLimit(const std::vector<std::string>& args) {
     LimitBenchOptions o;
-    ArgParser p(args);
+    ArgParser p(args, kBenchLimitFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchLimitHelp);
-        else if (a == "--width") o.width = int(p.integer(a, 1, 8192));
+        if (a == "--width") o.width = int(p.integer(a, 1, 8192));
         else if (a == "--height") o.height = int(p.integer(a, 1, 8192));
         else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
         else if (a == "--threads") o.threads = int(p.integer(a, 0, 4096));
         else if (a == "--spd") o.spd = true;
         else if (a == "--out") o.outPath = p.value(a);
-        else if (!a.empty() && a[0] == '-') throw UsageError("bench limit: unknown option '" + a + "'");
         else if (o.scene.empty()) o.scene = a;
         else throw UsageError("bench limit: one scene at a time");
     }
@@ -164,16 +204,14 @@ int benchLimit(const std::vector<std::string>& args) {
 
 int benchEffects(const std::vector<std::string>& args) {
     EffectsBenchOptions o;
-    ArgParser p(args);
+    ArgParser p(args, kBenchEffectsFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchEffectsHelp);
-        else if (a == "--width") o.width = int(p.integer(a, 1, 8192));
+        if (a == "--width") o.width = int(p.integer(a, 1, 8192));
         else if (a == "--height") o.height = int(p.integer(a, 1, 8192));
         else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
         else if (a == "--threads") o.threads = int(p.integer(a, 1, 4096));
         else if (a == "--spd") o.spd = true;
-        else if (!a.empty() && a[0] == '-') throw UsageError("bench effects: unknown option '" + a + "'");
         else o.scenes.push_back(a);
     }
     if (o.scenes.empty()) throw UsageError("bench effects: missing SCENE");
@@ -182,12 +220,11 @@ int benchEffects(const std::vector<std::string>& args) {
 
 int benchPrimitives(const std::vector<std::string>& args) {
     int iterations = 50;
-    ArgParser p(args);
+    ArgParser p(args, kBenchPrimitivesFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchPrimitivesHelp);
-        else if (a == "--iterations") iterations = int(p.integer(a, 1, 100000));
-        else throw UsageError("bench primitives: unknown argument '" + a + "'");
+        if (a == "--iterations") iterations = int(p.integer(a, 1, 100000));
+        else throw UsageError("bench primitives: unexpected argument '" + a + "'");
     }
     runPrimitiveBench(std::cout, iterations);
     return 0;
@@ -195,11 +232,10 @@ int benchPrimitives(const std::vector<std::string>& args) {
 
 int benchTextures(const std::vector<std::string>& args) {
     TextureBenchOptions o;
-    ArgParser p(args);
+    ArgParser p(args, kBenchTexturesFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchTexturesHelp);
-        else if (a == "--size") o.size = int(p.integer(a, 2, 8192));
+        if (a == "--size") o.size = int(p.integer(a, 2, 8192));
         else if (a == "--lookups") o.lookups = int(p.integer(a, 1, 100000000));
         else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
         else throw UsageError("bench textures: unknown argument '" + a + "'");
@@ -210,11 +246,10 @@ int benchTextures(const std::vector<std::string>& args) {
 
 int benchIngest(const std::vector<std::string>& args) {
     IngestBenchOptions o;
-    ArgParser p(args);
+    ArgParser p(args, kBenchIngestFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (isHelp(a)) help(kBenchIngestHelp);
-        else if (a == "--triangles") o.triangles = size_t(p.integer(a, 2, 200000000));
+        if (a == "--triangles") o.triangles = size_t(p.integer(a, 2, 200000000));
         else if (a == "--runs") o.runs = int(p.integer(a, 1, 1000));
         else if (a == "--threads") o.threads = {int(p.integer(a, 0, 4096))};
         else if (a == "--dir") {
@@ -231,6 +266,8 @@ int benchCommand(const std::vector<std::string>& args) {
     if (args.empty())
         throw UsageError(
             "bench: expected a benchmark: accel, limit, effects, primitives, textures or ingest");
+    const std::vector<std::string> benchmarks{"accel", "limit", "effects", "primitives", "textures",
+                                              "ingest"};
     const std::string which = args.front();
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (isHelp(which)) help(kBenchHelp);
@@ -240,8 +277,10 @@ int benchCommand(const std::vector<std::string>& args) {
     if (which == "primitives") return benchPrimitives(rest);
     if (which == "textures") return benchTextures(rest);
     if (which == "ingest") return benchIngest(rest);
-    throw UsageError("bench: unknown benchmark '" + which +
-                     "' (expected accel, limit, effects, primitives, textures or ingest)");
+    const std::string hint = didYouMean(which, benchmarks);
+    throw UsageError("bench: unknown benchmark '" + which + "'" +
+                     (hint.empty() ? " (expected accel, limit, effects, primitives, textures or ingest)"
+                                   : hint));
 }
 
 }  // namespace raylab

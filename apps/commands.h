@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/arg_parser.h"
 #include "renderer/cancel.h"
 
 namespace raylab {
@@ -20,5 +21,11 @@ int accuracyCommand(const std::vector<std::string>& args);
 int compareCommand(const std::vector<std::string>& args);
 
 extern const char* const kRenderHelp;
+
+/// The flags of every command and benchmark (help text included), for the
+/// tests that check each is in its --help.
+extern const CommandFlags kRenderFlags, kAccuracyFlags, kCompareFlags, kBenchAccelFlags,
+    kBenchLimitFlags, kBenchEffectsFlags, kBenchPrimitivesFlags, kBenchTexturesFlags,
+    kBenchIngestFlags;
 
 }  // namespace raylab

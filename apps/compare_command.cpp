@@ -23,19 +23,16 @@ const char* const kCompareHelp =
     "images are bit-identical, 3 when they differ, 1 on unreadable input.\n";
 }  // namespace
 
+const CommandFlags kCompareFlags{"compare", kCompareHelp, {{"--threshold", "", true}}};
+
 int compareCommand(const std::vector<std::string>& args) {
     std::vector<std::string> files;
     double threshold = 1e-3;
-    ArgParser p(args);
+    ArgParser p(args, kCompareFlags);
     while (!p.done()) {
         const std::string a = p.next();
-        if (a == "-h" || a == "--help") {
-            std::fputs(kCompareHelp, stdout);
-            std::exit(0);
-        } else if (a == "--threshold") {
+        if (a == "--threshold") {
             threshold = p.number(a, 0, 1e30);
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("compare: unknown option '" + a + "'");
         } else {
             files.push_back(a);
         }

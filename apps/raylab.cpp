@@ -15,6 +15,7 @@
 #include "apps/commands.h"
 #include "apps/signals.h"
 #include "renderer/cancel.h"
+#include "renderer/io/did_you_mean.h"
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -25,6 +26,8 @@ const char* const kMainHelp =
     "raylab: a Whitted ray tracer on Embree\n"
     "\n"
     "usage: raylab <command> [options]\n"
+    "       raylab help <command>      the options of a command (= raylab <command> --help)\n"
+    "       raylab --version, -V       the version\n"
     "\n"
     "commands:\n"
     "  render SCENE -o OUT.exr [options]   render a scene (.json, .obj or .nff) to OpenEXR\n"
@@ -34,7 +37,9 @@ const char* const kMainHelp =
     "  accuracy SCENE [options]            what accuracy costs in time: error vs time sweep\n"
     "  compare A.exr B.exr                 how far apart two renders are (RMSE, PSNR, identical pixels)\n"
     "\n"
-    "Run 'raylab <command> --help' for the options of a command.\n"
+    "Run 'raylab <command> --help' or 'raylab help <command>' for the options of a command.\n"
+    "Flags take their value as '--flag value' or '--flag=value'; -o and -q are short for\n"
+    "--output and --quiet.\n"
     "Exit codes: 0 success, 1 bad input (scene, mesh, file), 2 bad usage,\n"
     "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP).\n";
 
@@ -45,13 +50,19 @@ int run(const std::vector<std::string>& args) {
             std::fputs(kMainHelp, stderr);
             return 2;
         }
-        const std::string command = args.front();
-        const std::vector<std::string> rest(args.begin() + 1, args.end());
+        std::string command = args.front();
+        std::vector<std::string> rest(args.begin() + 1, args.end());
+        if (command == "help" && !rest.empty()) {
+            // "raylab help bench accel" is "raylab bench accel --help".
+            command = rest.front();
+            rest.erase(rest.begin());
+            rest.push_back("--help");
+        }
         if (command == "--help" || command == "-h" || command == "help") {
             std::fputs(kMainHelp, stdout);
             return 0;
         }
-        if (command == "--version") {
+        if (command == "--version" || command == "-V") {
             std::puts("raylab 0.1.0");
             return 0;
         }
@@ -60,9 +71,13 @@ int run(const std::vector<std::string>& args) {
         else if (command == "bench") code = benchCommand(rest);
         else if (command == "accuracy") code = accuracyCommand(rest);
         else if (command == "compare") code = compareCommand(rest);
-        else
-            throw UsageError("unknown command '" + command +
-                             "' (expected render, bench, accuracy or compare)");
+        else {
+            const std::string hint =
+                didYouMean(command, {"render", "bench", "accuracy", "compare", "help", "--help",
+                                     "--version"});
+            throw UsageError("unknown command '" + command + "'" +
+                             (hint.empty() ? " (expected render, bench, accuracy or compare)" : hint));
+        }
         // Commands that stop on the flag themselves return 130 whatever the signal.
         if (code == 130 && cancelSignal() != 0) code = 128 + cancelSignal();
         return code;

@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -28,6 +30,7 @@
 #include "renderer/accel/accelerator.h"
 #include "renderer/camera_matrices.h"
 #include "renderer/cancel.h"
+#include "renderer/crop_window.h"
 #include "renderer/effects.h"
 #include "renderer/first_look.h"
 #include "renderer/io/atomic_file.h"
@@ -87,7 +90,8 @@ const char* const kRenderHelp =
     "                           and Cryptomatte id)\n"
     "  --frames A:B             render frames A..B of the scene's camera_path: OUT_0001.exr ...\n"
     "                           (and every other output numbered alike)\n"
-    "  --quiet                  no progress bar and no summary\n"
+    "  -q, --quiet              no progress bar and no summary (the bar is drawn only when\n"
+    "                           stderr is a terminal)\n"
     "\n"
     "image:\n"
     "  --width W, --height H    resolution in pixels (1..65536)\n"
@@ -105,6 +109,13 @@ const char* const kRenderHelp =
     "                           of a pixel; samples that reach it are counted and warned about\n"
     "  --spd                    Haines' SPD testing procedure: 512x512, rays through pixel corners,\n"
     "                           depth 5, zero-weight reflection rays traced and counted\n"
+    "  --crop X0,X1,Y0,Y1       render only the window [X0,X1) x [Y0,Y1) of the image, in NDC\n"
+    "                           (0..1 of the width and height, y from the top; pbrt's\n"
+    "                           --cropwindow): pixels ceil(X0*W) .. ceil(X1*W)-1, likewise in y.\n"
+    "                           The EXR keeps the full image as its display window and the crop\n"
+    "                           as its data window; the PNG is the crop. Each pixel is bit-identical\n"
+    "                           to the same pixel of the full render (--spp, --adaptive, --spd\n"
+    "                           and mpirun included)\n"
     "\n"
     "camera (any scene type; each flag replaces the scene's value, the others are kept):\n"
     "  --eye X,Y,Z              eye position\n"
@@ -114,9 +125,9 @@ const char* const kRenderHelp =
     "\n"
     "bare .obj scenes (framed by raylab: the silhouette fills about 80% of the image):\n"
     "  --up x|y|z|-x|-y|-z      the model's up axis (default y; z for CAD models and terrains)\n"
-    "  --normals file|flat|smooth   shading normals: the file's vn, else averaged within each\n"
-    "                           smoothing group 's' (default); none; or the file's vn, else\n"
-    "                           averaged over the whole mesh\n"
+    "  --normals file|flat|smooth   shading normals. file (default): the file's vn, else\n"
+    "                           averaged within each smoothing group 's'; flat: every face flat,\n"
+    "                           even with vn; smooth: the file's vn, else averaged over the mesh\n"
     "\n"
     "performance and accuracy:\n"
     "  --threads N              worker threads (default: all cores); the image does not depend on it\n"
@@ -132,6 +143,9 @@ const char* const kRenderHelp =
     "  --polygons watertight|projected|triangles   planar polygons: the watertight ray-space\n"
     "                           inside test (default), the lecture's projected 2D test, or ear-\n"
     "                           clipped into Embree triangles (two-sided)\n"
+    "  --effects auto|all       auto (default): the kernel specialised to the effects the scene\n"
+    "                           uses; all: the general kernel, every ray type at every hit with\n"
+    "                           pruning off (the same picture, slower: docs/effects.md)\n"
     "\n"
     "textures (docs/accuracy.md#textures):\n"
     "  --texture-filter point|bilinear|trilinear|anisotropic   lookups: nearest texel or bilinear\n"
@@ -146,8 +160,28 @@ const char* const kRenderHelp =
     "                           --threads defaults to the cores of a machine / its ranks; every\n"
     "                           rank must read the same scene bytes and image flags (checked)\n"
     "\n"
+    "Flags take their value as '--flag value' or '--flag=value'.\n"
     "SIGINT, SIGTERM and SIGHUP stop the render in any phase: temporaries are removed, earlier\n"
     "outputs are left as they were, exit code 128+signal (130, 143, 129).\n";
+
+const CommandFlags kRenderFlags{
+    "render",
+    kRenderHelp,
+    {{"--output", "-o", true},      {"--png", "", true},         {"--exposure", "", true},
+     {"--float", "", false},        {"--alpha", "", true},       {"--compression", "", true},
+     {"--stats", "", true},
+     {"--frames", "", true},
+     {"--quiet", "-q", false},      {"--width", "", true},       {"--height", "", true},
+     {"--spp", "", true},           {"--depth", "", true},       {"--seed", "", true},
+     {"--max-rays", "", true},
+     {"--adaptive", "", true},      {"--adaptive-levels", "", true}, {"--min-weight", "", true},
+     {"--spd", "", false},          {"--crop", "", true},        {"--eye", "", true},
+     {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
+     {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
+     {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
+     {"--precision", "", true},     {"--shadows", "", true},     {"--epsilon", "", true},
+     {"--polygons", "", true},      {"--effects", "", true},     {"--texture-filter", "", true},
+     {"--texture-footprint", "", true}}};
 
 namespace {
 
@@ -163,9 +197,30 @@ struct RenderCli {
     CameraOverrides camera;    ///< --eye, --look-at, --camera-up, --fov
     std::optional<Vec3> upAxis;  ///< --up (bare .obj)
     std::optional<ObjNormals> normals;  ///< --normals (bare .obj)
+    std::optional<CropWindow> crop;     ///< --crop, in NDC
 };
 
 Vec3 toVec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+/// --crop X0,X1,Y0,Y1: four numbers in [0, 1], X0 < X1 and Y0 < Y1 (pbrt's order).
+CropWindow parseCropWindow(const std::string& flag, const std::string& v) {
+    const std::string expected = flag + ": expected X0,X1,Y0,Y1 in [0, 1] with X0 < X1 and Y0 < Y1 (got '" + v + "')";
+    double c[4];
+    size_t start = 0;
+    for (int i = 0; i < 4; ++i) {
+        const size_t comma = v.find(',', start);
+        if ((i < 3) != (comma != std::string::npos)) throw UsageError(expected);
+        const std::string part = v.substr(start, i < 3 ? comma - start : std::string::npos);
+        char* end = nullptr;
+        c[i] = std::strtod(part.c_str(), &end);
+        if (part.empty() || std::isspace(static_cast<unsigned char>(part[0])) || *end != '\0' ||
+            !(c[i] >= 0 && c[i] <= 1))
+            throw UsageError(expected);
+        start = comma + 1;
+    }
+    if (!(c[0] < c[1] && c[2] < c[3])) throw UsageError(expected);
+    return {c[0], c[1], c[2], c[3]};
+}
 
 /// The output flags of a render, for checkOutputNames.
 std::vector<OutputFlag> outputFlags(const RenderCli& cli) {
@@ -200,14 +255,11 @@ Scene loadSceneNamingFile(const std::string& path, const SceneLoadOptions& optio
 
 RenderCli parseRenderArgs(const std::vector<std::string>& args) {
     RenderCli cli;
-    ArgParser p(args);
+    ArgParser p(args, kRenderFlags);
     RenderOverrides& o = cli.overrides;
     while (!p.done()) {
         const std::string a = p.next();
-        if (a == "-h" || a == "--help") {
-            std::fputs(kRenderHelp, stdout);
-            std::exit(0);
-        } else if (a == "-o" || a == "--output") cli.images.push_back({"-o", p.repeatableValue(a)});
+        if (a == "-o" || a == "--output") cli.images.push_back({"-o", p.repeatableValue(a)});
         else if (a == "--png") cli.images.push_back({"--png", p.repeatableValue(a)});
         else if (a == "--alpha") o.alpha = p.choice(a, alphaModeNames());
         else if (a == "--stats") cli.stats = p.value(a);
@@ -262,8 +314,9 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--texture-filter") o.textureFilter = p.choice(a, textureFilterNames());
         else if (a == "--texture-footprint")
             o.textureFootprint = p.choice(a, textureFootprintNames());
-        else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());  // hidden: the general kernel
-        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (a == "--effects") o.effects = p.choice(a, effectsModeNames());
+        else if (a == "--crop") cli.crop = parseCropWindow(a, p.value(a));
+        else if (!a.empty() && a[0] == '-') throw std::logic_error("render: flag '" + a + "' declared but not handled");
         else if (cli.scene.empty()) cli.scene = a;
         else throw UsageError("unexpected argument '" + a + "' (one scene per render)");
     }
@@ -321,9 +374,14 @@ std::string rayCapWarning(const RenderResult& r, const RenderOptions& o, int fra
            "(--max-rays, --depth)\n";
 }
 
-void printSummary(const RenderStats& s, const std::vector<std::string>& outputs) {
-    std::printf("raylab: %dx%d, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
-                s.height, s.spp, s.maxDepth, s.accel.c_str(), s.threads,
+void printSummary(const RenderStats& s, const Film& film, const std::vector<std::string>& outputs) {
+    const std::string crop = film.isCrop() ? " (crop " + std::to_string(film.width) + "x" +
+                                                 std::to_string(film.height) + " at " +
+                                                 std::to_string(film.originX) + "," +
+                                                 std::to_string(film.originY) + ")"
+                                           : "";
+    std::printf("raylab: %dx%d%s, %d spp, depth %d, %s, %d threads, %llu primitives\n", s.width,
+                s.height, crop.c_str(), s.spp, s.maxDepth, s.accel.c_str(), s.threads,
                 (unsigned long long)s.primitives);
     std::string effects;
     for (const std::string& e : s.effects) effects += (effects.empty() ? "" : ", ") + e;
@@ -376,7 +434,15 @@ int renderCommand(const std::vector<std::string>& args) {
     RenderStats stats;
     stats.parseSeconds = secondsSince(t0);
 
-    const RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    if (cli.crop) {
+        options.crop = *cli.crop;
+        const PixelWindow w = cropPixels(options.crop, options.width, options.height);
+        if (w.empty())
+            throw UsageError("--crop: the window holds no pixel of the " +
+                             std::to_string(options.width) + "x" + std::to_string(options.height) +
+                             " image (pixels ceil(X0*W)..ceil(X1*W)-1 and likewise in y)");
+    }
     // Checked after the scene's own "render" block is merged: it may be the
     // one that turns adaptive sampling on.
     if (cli.overrides.spp && *cli.overrides.spp > 1 && (options.spd || options.adaptiveThreshold > 0))
@@ -533,7 +599,7 @@ int renderCommand(const std::vector<std::string>& args) {
                                 " and later not");
 
         if (!cli.quiet) {
-            printSummary(stats, written);
+            printSummary(stats, result.film, written);
             std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
         }
     }

@@ -44,7 +44,8 @@ private:
 }  // namespace
 
 ItemCodec::ItemCodec(const FrameRenderer& frame, const RenderOptions& options)
-    : m_frame(frame), m_spd(options.spd), m_width(options.width), m_height(options.height) {}
+    : m_frame(frame), m_spd(options.spd),
+      m_window(cropPixels(options.crop, options.width, options.height)) {}
 
 size_t ItemCodec::payloadBytes(int item) const {
     const WorkRegion r = m_frame.region(item);
@@ -54,8 +55,8 @@ size_t ItemCodec::payloadBytes(int item) const {
 }
 
 int ItemCodec::aovPixels(const WorkRegion& r) const {
-    // Corner row y < H is the top edge of pixel row y, whose AOVs it wrote.
-    return r.y0 < m_height ? m_width : 0;
+    // Corner row y < y1 is the top edge of pixel row y, whose AOVs it wrote.
+    return r.y0 < m_window.y1 ? m_window.width() : 0;
 }
 
 size_t ItemCodec::itemBytes(int item) const { return sizeof(int32_t) + payloadBytes(item); }
@@ -75,10 +76,9 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
         w.putBytes(&f.objectId[i], sizeof(float));
     };
     if (m_spd) {
-        const size_t cw = size_t(f.width) + 1;
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
-                const CornerSample& s = from.corners[size_t(y) * cw + size_t(x)];
+                const CornerSample& s = from.corner(x, y);
                 w.put(s.c.r);
                 w.put(s.c.g);
                 w.put(s.c.b);
@@ -86,7 +86,7 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
                 w.put(s.objectId);
             }
         }
-        for (int x = 0; x < aovPixels(r); ++x) putAovs(f.index(x, r.y0));
+        for (int x = 0; x < aovPixels(r); ++x) putAovs(f.index(m_window.x0 + x, r.y0));
         assert(w.position() == out.data() + out.size());
         return;
     }
@@ -120,10 +120,9 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
             in.getBytes(&f.objectId[i], sizeof(float));
         };
         if (m_spd) {
-            const size_t cw = size_t(f.width) + 1;
             for (int y = r.y0; y < r.y1; ++y) {
                 for (int x = r.x0; x < r.x1; ++x) {
-                    CornerSample& s = to.corners[size_t(y) * cw + size_t(x)];
+                    CornerSample& s = to.corner(x, y);
                     s.c.r = in.get<double>();
                     s.c.g = in.get<double>();
                     s.c.b = in.get<double>();
@@ -131,7 +130,7 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
                     s.objectId = in.get<int32_t>();
                 }
             }
-            for (int x = 0; x < aovPixels(r); ++x) getAovs(f.index(x, r.y0));
+            for (int x = 0; x < aovPixels(r); ++x) getAovs(f.index(m_window.x0 + x, r.y0));
         } else {
             for (int y = r.y0; y < r.y1; ++y) {
                 for (int x = r.x0; x < r.x1; ++x) {

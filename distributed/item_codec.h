@@ -31,12 +31,13 @@ public:
 
 private:
     size_t payloadBytes(int item) const;
-    /// SPD items: pixels of the film row whose AOV layers travel with region r.
+    /// SPD items: pixels of the film row whose AOV layers travel with region r
+    /// (from m_window.x0 on).
     int aovPixels(const WorkRegion& r) const;
 
     const FrameRenderer& m_frame;
     bool m_spd;
-    int m_width, m_height;
+    PixelWindow m_window;  ///< the pixels of the frame (the crop window, or the whole image)
 };
 
 /// Appends every counter of `c` (ray counts per type and depth, camera hits,

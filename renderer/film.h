@@ -35,6 +35,12 @@ struct MatteEntry {
 
 struct Film {
     int width = 0, height = 0;
+    /// Where the film lies in the full image (a crop render, the EXR's data
+    /// window inside its display window): its pixel (0, 0) is pixel
+    /// (originX, originY) of a fullWidth × fullHeight image. A whole frame
+    /// has origin 0 and full size = its size.
+    int originX = 0, originY = 0;
+    int fullWidth = 0, fullHeight = 0;
     FilmPlane rgba;      ///< 4 floats per pixel; A per the alpha mode (alpha_mode.h)
     FilmPlane z;         ///< planar camera depth of the first hit, kNoHitDepth where nothing is hit
     FilmPlane distance;  ///< Euclidean eye distance of the first hit, kNoHitDepth where nothing is hit
@@ -46,8 +52,10 @@ struct Film {
     std::vector<MatteEntry, HugePageAllocator<MatteEntry>> mattes;
 
     Film() = default;
-    Film(int w, int h)
-        : width(w), height(h),
+    Film(int w, int h) : Film(w, h, 0, 0, w, h) {}
+    /// The w × h window at (x0, y0) of a fullW × fullH image.
+    Film(int w, int h, int x0, int y0, int fullW, int fullH)
+        : width(w), height(h), originX(x0), originY(y0), fullWidth(fullW), fullHeight(fullH),
           rgba(size_t(w) * h * 4, 0.f),
           z(size_t(w) * h, kNoHitDepth),
           distance(size_t(w) * h, kNoHitDepth),
@@ -56,7 +64,14 @@ struct Film {
           objectId(size_t(w) * h, -1.f),
           mattes(size_t(w) * h * kMatteRanks) {}
 
-    size_t index(int x, int y) const { return size_t(y) * width + x; }
+    /// Full-image size (a film filled in by hand may leave it 0: then its own).
+    int displayWidth() const { return fullWidth > 0 ? fullWidth : width; }
+    int displayHeight() const { return fullHeight > 0 ? fullHeight : height; }
+    bool isCrop() const {
+        return originX != 0 || originY != 0 || displayWidth() != width || displayHeight() != height;
+    }
+    /// Index of pixel (x, y) in full-image coordinates.
+    size_t index(int x, int y) const { return size_t(y - originY) * width + size_t(x - originX); }
 };
 
 }  // namespace raylab

@@ -11,6 +11,8 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -169,7 +171,8 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
                  const RenderOptions& opt, Film& film, int x, int y, WorkCounters& tc) {
     const size_t i = film.index(x, y);
     const int n = std::max(1, opt.spp);
-    Pcg32 rng(pixelSeed(opt.seed, i), 0);
+    // Seeded by the pixel's index in the full image, so a crop renders it alike.
+    Pcg32 rng(pixelSeed(opt.seed, size_t(y) * size_t(opt.width) + size_t(x)), 0);
     // n-rooks permutation for non-square sample counts (Fisher-Yates).
     std::vector<int> perm;
     const int gridSide = squareGridSide(n);
@@ -216,26 +219,47 @@ FrameRenderer::FrameRenderer(const Scene& scene, const Accelerator& accel,
                              const RenderOptions& options, const EffectSet& effects)
     : m_scene(scene), m_options(options),
       m_integrator(std::make_unique<WhittedIntegrator>(scene, accel, options, effects)),
-      m_tilesX((options.width + kTileSize - 1) / kTileSize),
-      m_tilesY((options.height + kTileSize - 1) / kTileSize) {}
+      m_window(cropPixels(options.crop, options.width, options.height)),
+      m_tileX0(m_window.x0 / kTileSize), m_tileY0(m_window.y0 / kTileSize),
+      m_tilesX(m_window.empty() ? 0 : (m_window.x1 - 1) / kTileSize - m_tileX0 + 1),
+      m_tilesY(m_window.empty() ? 0 : (m_window.y1 - 1) / kTileSize - m_tileY0 + 1) {
+    if (m_window.empty())
+        throw std::invalid_argument("crop window holds no pixel of a " +
+                                    std::to_string(options.width) + "x" +
+                                    std::to_string(options.height) + " image");
+}
 
 FrameRenderer::~FrameRenderer() = default;
 
 int FrameRenderer::workItemCount() const {
-    return m_options.spd ? m_options.height + 1 : m_tilesX * m_tilesY;
+    return m_options.spd ? m_window.height() + 1 : m_tilesX * m_tilesY;
 }
 
 FrameBuffers FrameRenderer::makeBuffers() const {
     FrameBuffers b;
-    b.film = Film(m_options.width, m_options.height);
-    if (m_options.spd) b.corners.resize(size_t(m_options.width + 1) * (m_options.height + 1));
+    b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
+                  m_options.height);
+    if (m_options.spd) {
+        b.cornerX0 = m_window.x0;
+        b.cornerY0 = m_window.y0;
+        b.cornerStride = m_window.width() + 1;
+        b.corners.resize(size_t(m_window.width() + 1) * size_t(m_window.height() + 1));
+    }
     return b;
 }
 
-WorkRegion FrameRenderer::region(int item) const {
-    if (m_options.spd) return {0, item, m_options.width + 1, item + 1};
-    const int x0 = (item % m_tilesX) * kTileSize, y0 = (item / m_tilesX) * kTileSize;
+WorkRegion FrameRenderer::tile(int item) const {
+    const int x0 = (m_tileX0 + item % m_tilesX) * kTileSize;
+    const int y0 = (m_tileY0 + item / m_tilesX) * kTileSize;
     return {x0, y0, std::min(x0 + kTileSize, m_options.width), std::min(y0 + kTileSize, m_options.height)};
+}
+
+WorkRegion FrameRenderer::region(int item) const {
+    if (m_options.spd)
+        return {m_window.x0, m_window.y0 + item, m_window.x1 + 1, m_window.y0 + item + 1};
+    const WorkRegion t = tile(item);
+    return {std::max(t.x0, m_window.x0), std::max(t.y0, m_window.y0), std::min(t.x1, m_window.x1),
+            std::min(t.y1, m_window.y1)};
 }
 
 void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const {
@@ -244,25 +268,26 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         // SPD procedure: one eye ray through every pixel corner, (W+1)·(H+1)
         // rays; a work item is one row of corners. Corner (i, y) is the
         // top-left corner of pixel (i, y), whose AOV layers come from it.
-        const int cw = m_options.width + 1;
-        const bool aovRow = r.y0 < m_options.height && m_options.wantAovs;
+        const bool aovRow = r.y0 < m_window.y1 && m_options.wantAovs;
         for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i) {
             const Sample s = traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
-            buffers.corners[size_t(r.y0) * cw + i] = {s.c, s.first.hit, int32_t(s.first.objectId)};
-            if (aovRow && i < m_options.width && s.first.hit)
+            buffers.corner(i, r.y0) = {s.c, s.first.hit, int32_t(s.first.objectId)};
+            if (aovRow && i < m_window.x1 && s.first.hit)
                 storeFirstHit(buffers.film, buffers.film.index(i, r.y0), s.first);
         }
         return;
     }
     if (m_options.adaptiveThreshold > 0) {
-        AdaptiveTile tile(*m_integrator, m_scene, m_options, r, counters);
+        // The corner grid is the whole tile's, as in the full frame, even
+        // where the crop window cuts the tile.
+        AdaptiveTile adaptive(*m_integrator, m_scene, m_options, tile(item), counters);
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1 && !cancelRequested(); ++x) {
                 double coverage = 0;
                 FirstHit first;
                 MatteCoverage mattes;
                 const Color c =
-                    tile.pixel(x, y, coverage, first, m_options.wantAovs ? &mattes : nullptr);
+                    adaptive.pixel(x, y, coverage, first, m_options.wantAovs ? &mattes : nullptr);
                 const size_t i = buffers.film.index(x, y);
                 if (first.hit && m_options.wantAovs) storeFirstHit(buffers.film, i, first);
                 if (m_options.wantAovs) mattes.store(&buffers.film.mattes[i * kMatteRanks]);
@@ -279,12 +304,11 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
 void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
     if (!m_options.spd) return;
     // Each pixel is the mean of its four corners.
-    const int cw = m_options.width + 1;
     Film& film = buffers.film;
-    const CornerSample* top = &buffers.corners[size_t(y) * cw];
-    const CornerSample* bottom = top + cw;
-    for (int x = 0; x < m_options.width; ++x) {
-        const CornerSample &a = top[x], &b = top[x + 1], &c = bottom[x], &d = bottom[x + 1];
+    const CornerSample* top = &buffers.corner(m_window.x0, y);
+    const CornerSample* bottom = &buffers.corner(m_window.x0, y + 1);
+    for (int x = m_window.x0, k = 0; x < m_window.x1; ++x, ++k) {
+        const CornerSample &a = top[k], &b = top[k + 1], &c = bottom[k], &d = bottom[k + 1];
         const size_t i = film.index(x, y);
         if (m_options.wantAovs) {
             MatteCoverage mattes;
@@ -298,7 +322,7 @@ void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
 
 void FrameRenderer::finish(FrameBuffers& buffers) const {
     if (!m_options.spd) return;
-    tbb::parallel_for(0, m_options.height, [&](int y) { finishRow(buffers, y); });
+    tbb::parallel_for(m_window.y0, m_window.y1, [&](int y) { finishRow(buffers, y); });
 }
 
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
@@ -319,7 +343,9 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
     // SPD mode: pixel row y is averaged as soon as corner rows y and y + 1
     // are both done, by the thread that finished the second one (while the
     // corners are still in its cache), instead of in a serial pass at the end.
-    const int pixelRows = options.spd ? options.height : 0;
+    // Item k is corner row y0 + k of the (crop) window; counted per film row.
+    const int pixelRows = options.spd ? buffers.film.height : 0;
+    const int rowY0 = buffers.film.originY;
     std::unique_ptr<std::atomic<int>[]> cornerRowsDone(new std::atomic<int>[size_t(pixelRows)]);
     for (int y = 0; y < pixelRows; ++y) cornerRowsDone[y] = 0;
 
@@ -332,10 +358,10 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
             for (int item = range.begin(); item != range.end(); ++item) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 frame.renderWorkItem(item, buffers, local);
-                // Corner row `item` borders pixel rows item - 1 and item.
+                // Corner row y0 + item borders film rows item - 1 and item.
                 for (int y = item - 1; y <= item; ++y)
                     if (y >= 0 && y < pixelRows && ++cornerRowsDone[y] == 2)
-                        frame.finishRow(buffers, y);
+                        frame.finishRow(buffers, rowY0 + y);
                 const int n = ++done;
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progressMutex);

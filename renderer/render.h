@@ -52,10 +52,20 @@ struct WorkCounters {
 };
 
 /// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
-/// of the SPD procedure.
+/// of the SPD procedure (of the crop window's pixels in a crop render).
 struct FrameBuffers {
     Film film;
     std::vector<CornerSample, HugePageAllocator<CornerSample>> corners;
+    int cornerX0 = 0, cornerY0 = 0;  ///< full-image corner at corners[0]
+    int cornerStride = 0;            ///< corners per row
+
+    /// Corner (x, y) of the full image's corner grid.
+    CornerSample& corner(int x, int y) {
+        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
+    }
+    const CornerSample& corner(int x, int y) const {
+        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
+    }
 };
 
 /// The rectangle a work item writes: pixels [x0,x1)×[y0,y1) of the film, or
@@ -65,7 +75,9 @@ struct WorkRegion {
 };
 
 /// One frame cut into independent work items: 16×16 pixel tiles, or rows of
-/// pixel corners in SPD mode. Items can run in any order, on any thread or
+/// pixel corners in SPD mode. A crop render (options.crop) has the tiles of
+/// the full frame that meet the window, cut to it: coordinates stay those of
+/// the full image, so each pixel is computed exactly as in the full frame. Items can run in any order, on any thread or
 /// process; each writes only its own region, so the frame is deterministic.
 /// render() drives it with TBB; the distributed renderer hands items to ranks.
 class FrameRenderer {
@@ -78,21 +90,27 @@ public:
     WorkRegion region(int item) const;
     FrameBuffers makeBuffers() const;
     /// Renders one item into `buffers` (thread-safe for distinct items). In
-    /// SPD mode an item is corner row y: the film's AOV layers of pixel row y
+    /// SPD mode an item is corner row y (of the window): the film's AOV layers of pixel row y
     /// are written too (from each pixel's top-left corner), its RGBA only by
     /// finishRow once corner rows y and y + 1 both exist.
     void renderWorkItem(int item, FrameBuffers& buffers, WorkCounters& counters) const;
-    /// SPD mode: pixel row y becomes the mean of its corners (needs corner rows
-    /// y and y + 1; thread-safe for distinct rows). Nothing to do otherwise.
+    /// SPD mode: pixel row y (full-image coordinates, inside the window)
+    /// becomes the mean of its corners (needs corner rows y and y + 1;
+    /// thread-safe for distinct rows). Nothing to do otherwise.
     void finishRow(FrameBuffers& buffers, int y) const;
-    /// After every item: finishRow for every pixel row (in parallel).
+    /// After every item: finishRow for every pixel row of the window (in parallel).
     void finish(FrameBuffers& buffers) const;
 
 private:
+    /// Tile `item` of the full frame's grid, cut to the image but not to the window.
+    WorkRegion tile(int item) const;
+
     const Scene& m_scene;
     RenderOptions m_options;
     std::unique_ptr<WhittedIntegrator> m_integrator;
-    int m_tilesX, m_tilesY;
+    PixelWindow m_window;      ///< the pixels rendered (the whole image without --crop)
+    int m_tileX0, m_tileY0;    ///< first tile of the full grid that meets the window
+    int m_tilesX, m_tilesY;    ///< tiles that meet it
 };
 
 struct RenderResult {

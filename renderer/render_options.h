@@ -9,6 +9,7 @@
 #include "renderer/accel/accel_options.h"
 #include "renderer/accelerator_kind.h"
 #include "renderer/alpha_mode.h"
+#include "renderer/crop_window.h"
 #include "renderer/shadow_mode.h"
 #include "renderer/texture_options.h"
 
@@ -51,6 +52,7 @@ struct RenderOptions {
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)
     bool wantAovs = true;      ///< depth/normal/albedo/objectId layers are filled
+    CropWindow crop;           ///< --crop: only these pixels are rendered (the film is the crop)
 };
 
 }  // namespace raylab

@@ -52,6 +52,8 @@ std::string renderSettingsText(const RenderOptions& o) {
     add("texture_footprint", textureFootprintName(o.textures.footprint));
     add("effects", o.forceAllEffects ? "all" : "auto");
     add("aovs", o.wantAovs ? "on" : "off");
+    add("crop", exact(o.crop.x0) + "," + exact(o.crop.x1) + "," + exact(o.crop.y0) + "," +
+                    exact(o.crop.y1));
     return s;
 }
 

@@ -83,7 +83,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                                     int depth, TraceState& state) const {
     // Radiance saturates at the largest double (shading/radiance_range.h):
     // an overflow is as bright as can be, never Inf, never NaN, never black.
-    Color result = saturated(m.ka * m_scene.ambient);  // ambient once, kept in shadow
+    const Color ka = m.ambientFollowsDiffuse ? diffuseAt(si, m) : m.ka;
+    Color result = saturated(ka * m_scene.ambient);  // ambient once, kept in shadow
     if constexpr ((E & kShadows) == 0) {
         return result;
     } else {

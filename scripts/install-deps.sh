@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages raylab needs, only those that are missing.
 # Idempotent: a second run does nothing and needs no network. Uses sudo when
 # not root. Usage: scripts/install-deps.sh [--optional]
-#   --optional  also the tools for fuzzing, distributed rendering and the POV-Ray comparison
+#   --optional  also the tools for fuzzing, distributed rendering, the POV-Ray comparison and
+#               the tests that open reports in a browser and rasterise plots
 set -euo pipefail
 
 required=(
@@ -20,6 +21,9 @@ optional=(
   clang libclang-rt-14-dev  # libFuzzer targets (make fuzz)
   libopenmpi-dev openmpi-bin # distributed rendering (-DRAYLAB_MPI=ON)
   povray                     # scripts/bench-povray.sh: raylab vs POV-Ray on the SPD scenes
+  chromium                   # the headless-browser test of the HTML reports (--html)
+  librsvg2-bin imagemagick libmagickcore-6.q16-6-extra fonts-dejavu-core
+                             # the tests that rasterise a --plot SVG (rsvg-convert, convert)
 )
 
 wanted=("${required[@]}")

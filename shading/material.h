@@ -25,6 +25,10 @@ struct SurfaceOptics {
     Color km{0, 0, 0};       ///< ideal mirror reflection weight
     Color kt{0, 0, 0};       ///< transmission (refraction) weight
     double ior = 1.0;        ///< index of refraction of the inside medium
+    /// Ambient reflected like the diffuse light, colour for colour: kd as
+    /// textured, times the surface's vertex colours, instead of ka. An MTL
+    /// material without Ka and map_Ka (docs/obj.md: Ka = Kd).
+    bool ambientFollowsDiffuse = false;
 
     bool reflective() const { return !km.isBlack(); }
     bool transmissive() const { return !kt.isBlack(); }

@@ -20,6 +20,8 @@ long long floorIndex(double x) {
 
 /// Index into [0, n), or -1 for a texel outside the image under WrapMode::Black.
 long long wrapIndex(long long i, int n, WrapMode wrap) {
+    // Inside the image under every mode: the common case, without a division.
+    if (i >= 0 && i < n) return i;
     switch (wrap) {
     case WrapMode::Repeat: {
         const long long r = i % n;
@@ -98,9 +100,12 @@ size_t MipMap::bytes() const {
 
 Texel MipMap::texel(int level, long long x, long long y, WrapMode wrap) const {
     const Level& l = m_levels[size_t(level)];
-    const long long xi = wrapIndex(x, l.width, wrap), yi = wrapIndex(y, l.height, wrap);
+    return fetch(l, wrapIndex(x, l.width, wrap), wrapIndex(y, l.height, wrap));
+}
+
+Texel MipMap::fetch(const Level& l, long long xi, long long yi) const {
     Texel out{0, 0, 0, 0};
-    if (xi < 0 || yi < 0) return out;
+    if (xi < 0 || yi < 0) return out;  // outside, under WrapMode::Black
     const float* p = &l.texels[(size_t(yi) * l.width + size_t(xi)) * m_channels];
     for (int c = 0; c < m_channels; ++c) out[size_t(c)] = p[c];
     return out;
@@ -120,9 +125,12 @@ Texel MipMap::bilinear(int level, Vec2 st, WrapMode wrap) const {
         return f >= 0 && f < 1 ? f : 0.0;
     };
     const double fx = fraction(x, x0), fy = fraction(y, y0);
-    const Texel top = lerp(fx, texel(level, x0, y0, wrap), texel(level, x0 + 1, y0, wrap));
-    const Texel bottom =
-        lerp(fx, texel(level, x0, y0 + 1, wrap), texel(level, x0 + 1, y0 + 1, wrap));
+    // Each column and row wrapped once for the four texels.
+    const Level& l = m_levels[size_t(level)];
+    const long long xa = wrapIndex(x0, l.width, wrap), xb = wrapIndex(x0 + 1, l.width, wrap);
+    const long long ya = wrapIndex(y0, l.height, wrap), yb = wrapIndex(y0 + 1, l.height, wrap);
+    const Texel top = lerp(fx, fetch(l, xa, ya), fetch(l, xb, ya));
+    const Texel bottom = lerp(fx, fetch(l, xa, yb), fetch(l, xb, yb));
     return lerp(fy, top, bottom);
 }
 

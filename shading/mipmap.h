@@ -67,6 +67,8 @@ private:
         std::vector<float> texels;
     };
     Texel ewaLevel(int level, Vec2 st, Vec2 a, Vec2 b, WrapMode wrap) const;
+    /// Texel (xi, yi) of `l`, already wrapped (-1: black).
+    Texel fetch(const Level& l, long long xi, long long yi) const;
 
     int m_channels = 0;
     std::vector<Level> m_levels;

@@ -55,6 +55,12 @@ Film readExr(const std::string& path) {
         Film film;
         film.width = int(w);
         film.height = int(h);
+        // A crop render's data window inside the display window.
+        const Imath::Box2i display = header.displayWindow();
+        film.originX = dw.min.x - display.min.x;
+        film.originY = dw.min.y - display.min.y;
+        film.fullWidth = display.max.x - display.min.x + 1;
+        film.fullHeight = display.max.y - display.min.y + 1;
         const size_t n = size_t(w) * size_t(h);
 
         Imf::FrameBuffer fb;

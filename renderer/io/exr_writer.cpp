@@ -150,6 +150,19 @@ char* bytes(const T* p) {
     return reinterpret_cast<char*>(const_cast<T*>(p));
 }
 
+/// The film's pixels in full-image coordinates.
+Imath::Box2i exrDataWindow(const Film& film) {
+    return Imath::Box2i({film.originX, film.originY},
+                        {film.originX + film.width - 1, film.originY + film.height - 1});
+}
+
+/// A slice whose first element is the data window's top-left pixel
+/// (OpenEXR addresses slices from pixel (0, 0) of the display window).
+Imf::Slice sliceIn(const Imath::Box2i& dataWindow, Imf::PixelType type, char* first, size_t xStride,
+                   size_t yStride) {
+    return Imf::Slice::Make(type, first, dataWindow, xStride, yStride);
+}
+
 }  // namespace
 
 std::string matteName(const std::vector<std::string>& objectNames, int index) {
@@ -190,7 +203,10 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     const float* objectId = floatPlane(film.objectId, n, -1.f, false, objectIdCopy);
     const FilmPlane crypto = cryptomattePlane(film, n, opts.objectNames);
 
-    Imf::Header header(film.width, film.height);
+    // A crop render is the data window inside the full image's display window.
+    const Imath::Box2i dataWindow = exrDataWindow(film);
+    Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
+                       dataWindow);
     header.compression() = toImf(opts.compression);
     if (!opts.software.empty()) header.insert("software", Imf::StringAttribute(opts.software));
     if (opts.camera) {
@@ -225,28 +241,29 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     for (int c = 0; c < 4; ++c) {
         channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
         if (opts.floatPixels)
-            fb.insert(rgbaNames[c], Imf::Slice(Imf::FLOAT, bytes(rgbaF + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(rgbaF + c),
                                                4 * sizeof(float), 4 * sizeof(float) * w));
         else
-            fb.insert(rgbaNames[c], Imf::Slice(Imf::HALF, bytes(rgbaH.data() + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF, bytes(rgbaH.data() + c),
                                                4 * sizeof(half), 4 * sizeof(half) * w));
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z", Imf::Slice(Imf::FLOAT, bytes(z), sizeof(float), sizeof(float) * w));
+    fb.insert("Z", sliceIn(dataWindow, Imf::FLOAT, bytes(z), sizeof(float), sizeof(float) * w));
     channels.insert("distance", Imf::Channel(Imf::FLOAT));
-    fb.insert("distance", Imf::Slice(Imf::FLOAT, bytes(distance), sizeof(float), sizeof(float) * w));
+    fb.insert("distance",
+              sliceIn(dataWindow, Imf::FLOAT, bytes(distance), sizeof(float), sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
         channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], Imf::Slice(Imf::FLOAT, bytes(normal + c),
+        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(normal + c),
                                              3 * sizeof(float), 3 * sizeof(float) * w));
         channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
-        fb.insert(albedoNames[c], Imf::Slice(Imf::HALF, bytes(albedo.data() + c),
+        fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(albedo.data() + c),
                                              3 * sizeof(half), 3 * sizeof(half) * w));
     }
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", Imf::Slice(Imf::FLOAT, bytes(objectId), sizeof(float),
+    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId), sizeof(float),
                                      sizeof(float) * w));
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
     const size_t cryptoStride = 2 * kMatteRanks * sizeof(float);
@@ -257,8 +274,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         for (int c = 0; c < 4; ++c) {
             const std::string name = base + components[c];
             channels.insert(name, Imf::Channel(Imf::FLOAT));
-            fb.insert(name, Imf::Slice(Imf::FLOAT, bytes(crypto.data() + 4 * layer + c),
-                                       cryptoStride, cryptoStride * w));
+            fb.insert(name, sliceIn(dataWindow, Imf::FLOAT, bytes(crypto.data() + 4 * layer + c),
+                                    cryptoStride, cryptoStride * w));
         }
     }
 
@@ -274,7 +291,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         // scope, before writeFileAtomically renames the file.
         Imf::OutputFile file(tmp.c_str(), header, threads);
         file.setFrameBuffer(fb);
-        file.writePixels(film.height);
+        file.writePixels(film.height);  // every scan line of the data window
     }, group);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/io/did_you_mean.h"
 #include "renderer/io/errors.h"
 
 namespace raylab {
@@ -27,26 +28,6 @@ std::string quotedList(const std::vector<std::string>& items) {
     for (size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + ("'" + items[i] + "'");
     return s;
 }
-
-namespace {
-
-/// Levenshtein distance, for "did you mean" hints on unknown keys.
-size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diag = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
-            diag = up;
-        }
-    }
-    return row[b.size()];
-}
-
-}  // namespace
 
 // ---------------------------------------------------------------------------
 // Typed values
@@ -147,15 +128,8 @@ JsonFields::JsonFields(const JsonFieldReader& reader, const JsonValue& value, st
         const std::string& key = value.key(i);
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
         // Suggest the closest allowed key within two edits, else list them all.
-        std::string hint = " (expected " + quotedList(allowed) + ")";
-        size_t best = 3;
-        for (const std::string& a : allowed) {
-            const size_t d = editDistance(key, a);
-            if (d < best) {
-                best = d;
-                hint = " (did you mean '" + a + "'?)";
-            }
-        }
+        std::string hint = didYouMean(key, allowed);
+        if (hint.empty()) hint = " (expected " + quotedList(allowed) + ")";
         reader.fail(value.keyLine(i), memberPath(m_path, key), "unknown key for " + m_what + hint);
     }
 }

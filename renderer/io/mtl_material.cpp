@@ -1,5 +1,7 @@
 #include "renderer/io/mtl_material.h"
 
+#include <strings.h>
+
 #include <string>
 
 #include "renderer/io/mtl_textures.h"
@@ -22,6 +24,12 @@ Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
     // Without Ka, ambient light is reflected like the diffuse light (Ka = Kd):
     // shadowed sides keep the surface's colour instead of going black.
     out.ka = m.ka.given() ? m.ka.value : out.kd;
+    // ... the diffuse colour as shaded, so also where map_Kd or vertex colours
+    // vary it (unless the file gives an ambient map of its own).
+    bool ambientMap = false;
+    for (const MtlTexture& t : m.textures)
+        ambientMap = ambientMap || ::strcasecmp(t.keyword.c_str(), "map_Ka") == 0;
+    out.ambientFollowsDiffuse = !m.ka.given() && !ambientMap;
     out.ks = m.ks.given() ? m.ks.value : Color(0);
     out.shininess = m.ns.given() ? m.ns.value : kDefaultShininess;
     out.ior = m.ni.given() && m.ni.value > 0 ? m.ni.value : 1.0;
@@ -35,7 +43,10 @@ Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
                  m.illum.line, m.file, "unknown illum values");
         illum = 2;
     }
-    if (illum == 0) out.ka = Color(0);
+    if (illum == 0) {
+        out.ka = Color(0);
+        out.ambientFollowsDiffuse = false;
+    }
     if (illum <= 1) out.ks = Color(0);
     // An exponent below 1 spreads the highlight over the whole lit side (Ns 0
     // with Ks 0.9 paints it white): such a surface is matte.

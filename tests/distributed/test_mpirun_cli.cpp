@@ -102,16 +102,26 @@ TEST_CASE("mpirun cli: the demo image, PNG and ray counts equal one process" * k
     CHECK(two.out.find("raylab: 96x72") == two.out.rfind("raylab: 96x72"));
 }
 
+namespace {
+
+/// shared/'s balls_s2.nff, or (without shared/) a small NFF scene with a
+/// mirror and a glass ball written into `dir`.
+std::string spdScene(const test::TempDir& dir) {
+    const std::string shared = std::string(RAYLAB_SHARED_DIR) + "/scenes/spd/balls_s2.nff";
+    if (std::filesystem::exists(shared)) return shared;
+    const std::string scene = dir.file("spd.nff");
+    std::ofstream(scene) << "v\nfrom 0 1 -6\nat 0 0.5 0\nup 0 1 0\nangle 40\nhither 0.01\n"
+                            "resolution 64 64\nb 0.1 0.2 0.3\nl 3 5 -4\n"
+                            "f 0.9 0.2 0.2 0.6 0.4 20 0 1\ns -1 0.5 0 0.5\n"
+                            "f 0.8 0.8 0.9 0.1 0.6 100 0.8 1.5\ns 0.8 0.6 0.2 0.6\n";
+    return scene;
+}
+
+}  // namespace
+
 TEST_CASE("mpirun cli: an SPD render equals one process" * kWithMpirun) {
     const test::TempDir dir;
-    std::string scene = std::string(RAYLAB_SHARED_DIR) + "/scenes/spd/balls_s2.nff";
-    if (!std::filesystem::exists(scene)) {
-        scene = dir.file("spd.nff");
-        std::ofstream(scene) << "v\nfrom 0 1 -6\nat 0 0.5 0\nup 0 1 0\nangle 40\nhither 0.01\n"
-                                "resolution 64 64\nb 0.1 0.2 0.3\nl 3 5 -4\n"
-                                "f 0.9 0.2 0.2 0.6 0.4 20 0 1\ns -1 0.5 0 0.5\n"
-                                "f 0.8 0.8 0.9 0.1 0.6 100 0.8 1.5\ns 0.8 0.6 0.2 0.6\n";
-    }
+    const std::string scene = spdScene(dir);
     const std::string flags = " --spd --width 64 --height 64 --float --quiet ";
     const Run one = runCommand(raylabBinary() + " render " + scene + flags + "-o " +
                                dir.file("one.exr") + " --stats " + dir.file("one.json"));
@@ -121,6 +131,57 @@ TEST_CASE("mpirun cli: an SPD render equals one process" * kWithMpirun) {
     REQUIRE_MESSAGE(two.exitCode == 0, two.err);
     checkSameExr(dir.file("one.exr"), dir.file("two.exr"));
     CHECK(rayStats(readFile(dir.file("one.json"))) == rayStats(readFile(dir.file("two.json"))));
+}
+
+TEST_CASE("mpirun cli: an SPD --crop equals one process and the full frame's pixels" *
+          kWithMpirun) {
+    const test::TempDir dir;
+    const std::string scene = spdScene(dir);
+    // x: ceil(0.3·64) = 20 .. ceil(0.77·64) = 50 (exclusive); y: ceil(0.2·64) = 13 ..
+    // ceil(0.9·64) = 58: 30x45 pixels whose edges cut through 16-pixel tiles.
+    const std::string flags = " --spd --width 64 --height 64 --float --quiet ";
+    const std::string crop = " --crop 0.3,0.77,0.2,0.9 ";
+    const Run full = runCommand(raylabBinary() + " render " + scene + flags + "-o " +
+                                dir.file("full.exr"));
+    REQUIRE_MESSAGE(full.exitCode == 0, full.err);
+    const Run one = runCommand(raylabBinary() + " render " + scene + flags + crop + "-o " +
+                               dir.file("one.exr") + " --png " + dir.file("one.png") +
+                               " --stats " + dir.file("one.json"));
+    REQUIRE_MESSAGE(one.exitCode == 0, one.err);
+    const Run two = runCommand(mpirunRaylab(2) + " render " + scene + flags + crop +
+                               "--threads 1 -o " + dir.file("two.exr") + " --png " +
+                               dir.file("two.png") + " --stats " + dir.file("two.json"));
+    REQUIRE_MESSAGE(two.exitCode == 0, two.err);
+    checkSameExr(dir.file("one.exr"), dir.file("two.exr"));
+    CHECK(readFile(dir.file("one.png")) == readFile(dir.file("two.png")));
+    CHECK(rayStats(readFile(dir.file("one.json"))) == rayStats(readFile(dir.file("two.json"))));
+
+    // The distributed crop is the window of the full frame: data window
+    // (20, 13) 30x45 in a 64x64 display window, every layer bit for bit.
+    const Film f = readExr(dir.file("full.exr"));
+    const Film c = readExr(dir.file("two.exr"));
+    CHECK(c.originX == 20);
+    CHECK(c.originY == 13);
+    CHECK(c.width == 30);
+    CHECK(c.height == 45);
+    CHECK(c.fullWidth == 64);
+    CHECK(c.fullHeight == 64);
+    Film window(c.width, c.height, c.originX, c.originY, f.width, f.height);
+    window.mattes.clear();  // readExr keeps no mattes (the Cryptomatte channels: tests/cli/test_crop.cpp)
+    for (int y = 0; y < c.height; ++y)
+        for (int x = 0; x < c.width; ++x) {
+            const size_t from = f.index(c.originX + x, c.originY + y);
+            const size_t to = window.index(c.originX + x, c.originY + y);
+            for (int k = 0; k < 4; ++k) window.rgba[to * 4 + k] = f.rgba[from * 4 + k];
+            window.z[to] = f.z[from];
+            window.distance[to] = f.distance[from];
+            for (int k = 0; k < 3; ++k) {
+                window.normal[to * 3 + k] = f.normal[from * 3 + k];
+                window.albedo[to * 3 + k] = f.albedo[from * 3 + k];
+            }
+            window.objectId[to] = f.objectId[from];
+        }
+    CHECK(test::filmDifference(window, c) == "");
 }
 
 TEST_CASE("mpirun cli: --frames writes a numbered sequence equal to one process" * kWithMpirun) {

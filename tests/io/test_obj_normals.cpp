@@ -192,3 +192,50 @@ TEST_CASE("vertex colours multiply kd, interpolated across the face") {
         CHECK(film.albedo[3 * i + 1] == 0.25f);
     }
 }
+
+TEST_CASE("without Ka, ambient light takes the vertex colours and map_Kd like the diffuse light") {
+    // Gallery finding: Ka = Kd held for the constant only, so a green
+    // vertex-coloured mesh without Ka was grey in shadow. No light, ambient
+    // 0.5: the pixel is 0.5 x Kd x colour, exactly.
+    TempDir dir;
+    dir.write("m.mtl",
+              "newmtl noka\nKd 1 1 1\n"                  // no Ka: follows the diffuse colour
+              "newmtl ka\nKa 0.2 0.2 0.2\nKd 1 1 1\n"    // Ka given: as given
+              "newmtl illum0\nKd 1 1 1\nillum 0\n");      // illum 0: no ambient at all
+    const auto scene = [&](const std::string& material) {
+        dir.write("sq.obj", "mtllib m.mtl\nusemtl " + material +
+                                "\nv 0 0 0 0 1 0.5\nv 1 0 0 0 1 0.5\nv 1 1 0 0 1 0.5\nv 0 1 0 0 1 0.5\n"
+                                "f 1 2 3 4\n");
+        return loadScene(dir.write(
+            "s.json",
+            "{\"camera\": {\"type\": \"orthographic\", \"eye\": [0.5, 0.5, 3], \"direction\": [0, 0, "
+            "-1], \"width\": 2}, \"ambient\": [0.5, 0.5, 0.5], \"lights\": [],"
+            " \"objects\": [{\"type\": \"mesh\", \"file\": \"sq.obj\"}]}"));
+    };
+    const auto follows = [](const Scene& s, const std::string& name) {
+        for (const Material& m : s.materials)
+            if (m.name.size() > name.size() && m.name.compare(m.name.size() - name.size() - 1, std::string::npos, "/" + name) == 0)
+                return m.ambientFollowsDiffuse;
+        FAIL("no material " << name);
+        return false;
+    };
+    const Scene noKa = scene("noka");
+    CHECK(follows(noKa, "noka"));
+    const Scene ka = scene("ka");
+    CHECK_FALSE(follows(ka, "ka"));
+    const Scene illum0 = scene("illum0");
+    CHECK_FALSE(follows(illum0, "illum0"));
+    for (const char* accel : {"embree", "naive"}) {
+        CAPTURE(accel);
+        const Film a = test::renderFilm(noKa, accel, 9, 9);
+        const size_t i = a.index(4, 4);
+        CHECK(a.rgba[4 * i] == 0.0f);
+        CHECK(a.rgba[4 * i + 1] == 0.5f);
+        CHECK(a.rgba[4 * i + 2] == 0.25f);
+        const Film b = test::renderFilm(ka, accel, 9, 9);
+        CHECK(b.rgba[4 * i] == 0.1f);  // 0.2 x 0.5, not coloured
+        CHECK(b.rgba[4 * i + 1] == 0.1f);
+        const Film c = test::renderFilm(illum0, accel, 9, 9);
+        CHECK(c.rgba[4 * i + 1] == 0.0f);
+    }
+}

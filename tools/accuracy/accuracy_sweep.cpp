@@ -369,6 +369,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     report.reference.psnr = HUGE_VAL;
     report.reference.nonFiniteSamples = reference.nonFiniteSamples;
     report.reference.nonFinitePixels = countNonFinite(reference.film);
+    if (options.keepImages) report.reference.film = reference.film;
 
     std::map<std::string, Film> matchedFilms;
     for (const auto& [key, m] : matched) {
@@ -426,6 +427,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
         res.nonFiniteSamples = first[i].nonFiniteSamples;
         res.nonFinitePixels = countNonFinite(film);
         res.deterministic = deterministic[i];
+        if (options.keepImages) res.film = film;
         report.results.push_back(std::move(res));
     }
     markParetoFront(report.results);

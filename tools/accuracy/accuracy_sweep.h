@@ -79,6 +79,9 @@ struct AccuracySweepOptions {
     /// A pixel counts as visibly different when its 8-bit sRGB value (the PNG
     /// preview's tone mapping, exposure 0) differs by more than this many levels.
     int visibleLevels = 2;
+    /// Keep each setting's first image (and the reference's) in the results,
+    /// for the HTML report.
+    bool keepImages = false;
 };
 
 /// What one setting cost and what it lost.
@@ -109,6 +112,7 @@ struct AccuracyResult {
     uint64_t nonFinitePixels = 0;   ///< NaN/Inf values in the finished RGBA; must be 0
     bool deterministic = true;      ///< every run produced bit-identical RGBA
     bool pareto = false;            ///< on the error-vs-time Pareto front
+    Film film;  ///< the image (first run) with AccuracySweepOptions::keepImages; else empty
 
     /// Build plus render wall-clock time: what a user waits for one frame.
     double frameSeconds() const { return buildSeconds + renderSeconds; }

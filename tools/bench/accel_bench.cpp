@@ -28,6 +28,8 @@
 #include "renderer/render_setup.h"
 #include "renderer/whitted_integrator.h"
 #include "tools/bench/scene_generators.h"
+#include "renderer/io/png_memory.h"
+#include "tools/report/html_page.h"
 #include "tools/report/machine.h"
 #include "tools/report/phase_clock.h"
 #include "tools/report/svg_plot.h"
@@ -59,6 +61,9 @@ struct Row {
     size_t parameter = 0;
     uint64_t primitives = 0;
     Timing embree, naive;
+    /// The frames, kept for the HTML report: Embree's always, the naive
+    /// loop's when it rendered full frames (else empty).
+    Film embreeImage, naiveImage;
 
     /// Embree rays/s over naive rays/s (> 1: Embree is faster per ray).
     double speedup() const {
@@ -71,6 +76,7 @@ struct Settings {
     int width, height, runs, threads;
     double naiveBudget;
     PhaseClock clock;  ///< CPU time of the working thread with one thread, else wall-clock
+    bool keepImages = false;  ///< --html: keep each scene's frames
 };
 
 /// Traces the camera rays of every `stride`-th pixel (pixel centres, as
@@ -158,7 +164,8 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
     {
         const auto accel =
             buildAccelerator("embree", scene, options, s.runs, row.embree.buildSeconds);
-        render(scene, *accel, options, effects);
+        RenderResult warmUp = render(scene, *accel, options, effects);
+        if (s.keepImages) row.embreeImage = std::move(warmUp.film);
         std::vector<double> times;
         for (int r = 0; r < s.runs; ++r)
             times.push_back(timeFrame(scene, *accel, options, effects, s.clock, row.embree.rays));
@@ -192,6 +199,7 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
                     timeFrame(scene, *accel, options, effects, s.clock, row.naive.rays));
             row.naive.stride = 1;
             row.naive.pixels = pixels;
+            if (s.keepImages) row.naiveImage = render(scene, *accel, options, effects).film;  // untimed
         } else {
             row.naive.stride = pixelSampleStride(
                 size_t(std::ceil(fullEstimate / s.naiveBudget)), options.width);
@@ -411,6 +419,65 @@ PlotSpec makePlot(const std::vector<Row>& rows, const std::vector<std::string>& 
     return plot;
 }
 
+/// The benchmark as a page: the plot, the table, and every scene's frames
+/// (Embree, the naive loop's where it rendered a full frame, and the error
+/// map between the two, which is black where they agree bit for bit).
+std::string accelHtml(const std::vector<Row>& rows, const std::vector<Crossover>& crossovers,
+                      const PlotSpec& plot, const Settings& s, const std::string& cpu) {
+    std::string body;
+    body += "<p>" + std::to_string(s.width) + "x" + std::to_string(s.height) +
+            ", 1 ray per pixel centre, median of " + std::to_string(s.runs) + " runs; " +
+            escapeHtml(cpu) + ", " + std::to_string(effectiveThreads(s.threads)) +
+            " threads; frame times: " + escapeHtml(s.clock.name()) + ".</p>\n";
+    int expected = 0;
+    for (const PlotSeries& series : plot.series)
+        for (const PlotPoint& p : series.points) expected += p.x > 0 && p.y > 0;
+    body += "<h2>Time per ray</h2>\n<div class=\"plot\" data-expected-points=\"" +
+            std::to_string(expected) + "\">\n" + renderSvgPlot(plot) + "</div>\n";
+    body += "<h2>Table</h2>\n<table>\n<tr><th>family</th><th>scene</th><th>primitives</th>"
+            "<th>Embree build ms</th><th>Embree frame ms</th><th>Embree ns/ray</th>"
+            "<th>naive build ms</th><th>naive frame ms</th><th>naive ns/ray</th><th>naive pixels</th>"
+            "<th>speedup</th><th>same image</th></tr>\n";
+    const auto td = [](const std::string& t) { return "<td>" + escapeHtml(t) + "</td>"; };
+    std::vector<ViewerImage> images, naive, maps;
+    for (const Row& r : rows) {
+        char speed[32], eNs[32], nNs[32];
+        std::snprintf(speed, sizeof speed, "%.1fx", r.speedup());
+        std::snprintf(eNs, sizeof eNs, "%.0f", r.embree.nanosecondsPerRay());
+        std::snprintf(nNs, sizeof nNs, "%.0f", r.naive.nanosecondsPerRay());
+        std::string same = "-";
+        const std::string label = r.family + " " + r.scene;
+        if (r.embreeImage.width > 0)
+            images.push_back({label, "Embree", std::to_string(r.primitives) + " primitives",
+                              toneMappedImage(r.embreeImage)});
+        if (r.naiveImage.width > 0 && r.embreeImage.width > 0) {
+            same = r.naiveImage.rgba == r.embreeImage.rgba ? "yes" : "no";
+            naive.push_back({label, "naive loop (full frames)", "", toneMappedImage(r.naiveImage)});
+            maps.push_back({label, "naive vs Embree error maps", same == "yes" ? "bit-identical" : "differs",
+                            errorMap(r.naiveImage, r.embreeImage)});
+        }
+        body += "<tr><td class=\"text\">" + escapeHtml(r.family) + "</td><td class=\"text\">" +
+                escapeHtml(r.scene) + "</td>" + td(std::to_string(r.primitives)) +
+                td(formatMs(r.embree.buildSeconds)) + td(formatMs(r.embree.renderSeconds)) + td(eNs) +
+                td(formatMs(r.naive.buildSeconds)) + td(formatMs(r.naive.renderSeconds)) + td(nNs) +
+                td(sampleText(r.naive)) + td(speed) + td(same) + "</tr>\n";
+    }
+    body += "</table>\n<h3>Crossover (naive loop faster than Embree per ray)</h3>\n<ul>\n";
+    for (const Crossover& c : crossovers)
+        body += "<li>" + escapeHtml(c.family + ": " + c.text) + "</li>\n";
+    body += "</ul>\n";
+    images.insert(images.end(), naive.begin(), naive.end());
+    images.insert(images.end(), maps.begin(), maps.end());
+    if (!images.empty()) {
+        body += "<h2>Images</h2>\n<p>Each scene as Embree rendered it, the naive loop's frame "
+                "where it rendered a full one, and the error map between them (black: the "
+                "same value; <img class=\"legend-bar\" alt=\"colour scale\" src=\"" +
+                pngDataUri(errorMapLegend(256, 12)) + "\"> from 1e-4 to 1, logarithmic).</p>\n";
+        body += comparisonViewer(images);
+    }
+    return htmlDocument("raylab bench accel", body);
+}
+
 bool endsWithSvg(const std::string& path) {
     if (path.size() < 5) return false;
     std::string ext = path.substr(path.size() - 4);
@@ -439,8 +506,11 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
     if (!options.plotPath.empty() && !endsWithSvg(options.plotPath))
         throw UsageError("bench accel: plot '" + options.plotPath + "' must end in .svg");
 
+    if (!options.htmlDir.empty()) checkReportDir(options.htmlDir, "--html");
+
     Settings s{options.width, options.height, options.runs, options.threads,
-               options.naiveBudgetSeconds, PhaseClock(effectiveThreads(options.threads) == 1)};
+               options.naiveBudgetSeconds, PhaseClock(effectiveThreads(options.threads) == 1),
+               !options.htmlDir.empty()};
     if (options.quick) {
         s.width = std::min(s.width, 128);
         s.height = std::min(s.height, 128);
@@ -505,6 +575,11 @@ int runAccelBench(const AccelBenchOptions& options, std::ostream& out) {
     if (!options.plotPath.empty()) {
         writeSvgPlot(options.plotPath, makePlot(rows, families, s, cpu));
         out << "plot: " << options.plotPath << "\n";
+    }
+    if (!options.htmlDir.empty()) {
+        const std::string page = writeHtmlReport(
+            options.htmlDir, accelHtml(rows, crossovers, makePlot(rows, families, s, cpu), s, cpu));
+        out << "report: " << page << "\n";
     }
     return 0;
 }

@@ -19,6 +19,7 @@ struct AccelBenchOptions {
     double naiveBudgetSeconds = 2.0;      ///< longest naive frame; beyond it, a pixel sample
     std::string outPath;                  ///< results as .csv or .json (empty: none)
     std::string plotPath;                 ///< log-log .svg plot of time per ray (empty: none)
+    std::string htmlDir;                  ///< DIR/index.html report (empty: none)
     bool quick = false;                   ///< ~20 s smoke run (small sizes, 128², <= 3 runs)
 };
 

@@ -91,7 +91,8 @@ public:
     struct Tick {
         double value;
         bool major;
-        std::string label;  ///< SVG text content (may contain a <tspan>)
+        std::string label;     ///< tick label ("" for none); the base "10" on a log axis
+        std::string exponent;  ///< log axes: the decade's exponent, drawn raised after the label
     };
 
     std::vector<Tick> ticks() const {
@@ -102,13 +103,12 @@ public:
             const int labelEvery = decades > 12 ? 2 : 1;
             for (int k = int(m_lo); k <= int(m_hi); ++k) {
                 const bool labelled = (k - int(m_lo)) % labelEvery == 0;
-                out.push_back({std::pow(10.0, k), true,
-                               labelled ? "10<tspan dy=\"-6\" font-size=\"10\">" +
-                                              std::to_string(k) + "</tspan>"
-                                        : ""});
+                out.push_back({std::pow(10.0, k), true, labelled ? "10" : "",
+                               labelled ? std::to_string(k) : ""});
                 if (k == int(m_hi)) break;
                 if (decades <= 8)
-                    for (int m = 2; m <= 9; ++m) out.push_back({m * std::pow(10.0, k), false, ""});
+                    for (int m = 2; m <= 9; ++m)
+                        out.push_back({m * std::pow(10.0, k), false, "", ""});
             }
         } else {
             const int n = int(std::lround((m_hi - m_lo) / m_step));
@@ -116,7 +116,7 @@ public:
                 const double v = m_lo + i * m_step;
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%g", std::abs(v) < 1e-12 * m_step ? 0.0 : v);
-                out.push_back({v, true, buf});
+                out.push_back({v, true, buf, ""});
             }
         }
         return out;
@@ -167,6 +167,62 @@ std::string marker(PlotMarker m, double x, double y, const std::string& color, b
     return "";
 }
 
+/// A tick label at (x, y) anchored at `anchor` ("middle" or "end"). A power
+/// of ten is two texts, "10" and its raised exponent, placed side by side:
+/// a <tspan dy> would be simpler, but ImageMagick's renderer draws it at the
+/// wrong place (the "garbled exponents" of older plots).
+std::string tickLabel(const std::string& base, const std::string& exponent, double x, double y,
+                      const std::string& anchor) {
+    if (exponent.empty())
+        return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + anchor +
+               "\" stroke=\"none\">" + base + "</text>\n";
+    // Widths at 12 px for the base and 10 px for the exponent (about 0.6 em
+    // a digit, 0.35 em a minus sign): close enough to centre or right-align.
+    double expWidth = 0;
+    for (char c : exponent) expWidth += c == '-' ? 3.5 : 6.0;
+    const double baseWidth = 14.0;
+    const double end = anchor == "middle" ? x + 0.5 * (baseWidth + expWidth) : x;
+    const double split = end - expWidth;  // where "10" ends and the exponent starts
+    return "<text x=\"" + num(split) + "\" y=\"" + num(y) +
+           "\" text-anchor=\"end\" stroke=\"none\">" + base + "</text>\n" + "<text x=\"" +
+           num(split + 0.5) + "\" y=\"" + num(y - 6) +
+           "\" text-anchor=\"start\" font-size=\"10\" stroke=\"none\">" + exponent + "</text>\n";
+}
+
+/// The plot frame, for clipping by hand: ImageMagick's renderer applies
+/// clipPath wrongly (it drew empty axes), so nothing outside the frame is
+/// emitted at all.
+struct Frame {
+    double x0, y0, x1, y1;  ///< x0 < x1, y0 < y1 (pixels)
+    bool contains(double x, double y) const {
+        const double e = 1e-6;
+        return x >= x0 - e && x <= x1 + e && y >= y0 - e && y <= y1 + e;
+    }
+    /// The part of segment a-b inside the frame (Liang-Barsky); false when none.
+    bool clip(double& ax, double& ay, double& bx, double& by) const {
+        double t0 = 0, t1 = 1;
+        const double dx = bx - ax, dy = by - ay;
+        const double p[4] = {-dx, dx, -dy, dy};
+        const double q[4] = {ax - x0, x1 - ax, ay - y0, y1 - ay};
+        for (int i = 0; i < 4; ++i) {
+            if (p[i] == 0) {
+                if (q[i] < 0) return false;
+                continue;
+            }
+            const double t = q[i] / p[i];
+            if (p[i] < 0) t0 = std::max(t0, t);
+            else t1 = std::min(t1, t);
+        }
+        if (t0 > t1) return false;
+        const double nax = ax + t0 * dx, nay = ay + t0 * dy;
+        bx = ax + t1 * dx;
+        by = ay + t1 * dy;
+        ax = nax;
+        ay = nay;
+        return true;
+    }
+};
+
 std::string ring(double x, double y) {
     return "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) +
            "\" r=\"8\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.2\"/>";
@@ -200,11 +256,15 @@ std::string renderSvgPlot(const PlotSpec& spec) {
     svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
            std::to_string(spec.width) + "\" height=\"" + std::to_string(spec.height) +
            "\" viewBox=\"0 0 " + std::to_string(spec.width) + " " + std::to_string(spec.height) +
-           "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n";
+           "\" font-family=\"DejaVu Sans\" font-size=\"12\">\n";
+    // Fonts: browsers and librsvg take the style sheet's list; ImageMagick
+    // ignores <style> and, given a list or a font it lacks, draws no text at
+    // all, so the attribute names one font (DejaVu, on every Debian desktop).
+    svg += "<style>text { font-family: Helvetica, Arial, 'DejaVu Sans', sans-serif; }</style>\n";
     svg += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(spec.width) + "\" height=\"" +
            std::to_string(spec.height) + "\" fill=\"white\"/>\n";
     if (!spec.title.empty())
-        svg += "<text class=\"title\" x=\"" + num(0.5 * (x0 + x1)) +
+        svg += "<text class=\"title\" stroke=\"none\" x=\"" + num(0.5 * (x0 + x1)) +
                "\" y=\"26\" text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\">" +
                escapeXml(spec.title) + "</text>\n";
 
@@ -217,9 +277,7 @@ std::string renderSvgPlot(const PlotSpec& spec) {
                    "\" y2=\"" + num(y1) + "\" stroke=\"#ddd\"/>\n";
         svg += "<line x1=\"" + num(px) + "\" y1=\"" + num(y0) + "\" x2=\"" + num(px) +
                "\" y2=\"" + num(y0 + (t.major ? 6 : 3)) + "\"/>\n";
-        if (!t.label.empty())
-            svg += "<text x=\"" + num(px) + "\" y=\"" + num(y0 + 22) +
-                   "\" text-anchor=\"middle\" stroke=\"none\">" + t.label + "</text>\n";
+        if (!t.label.empty()) svg += tickLabel(t.label, t.exponent, px, y0 + 22, "middle");
     }
     for (const AxisMap::Tick& t : yMap.ticks()) {
         const double py = yMap.toPixel(t.value);
@@ -228,39 +286,48 @@ std::string renderSvgPlot(const PlotSpec& spec) {
                    "\" y2=\"" + num(py) + "\" stroke=\"#ddd\"/>\n";
         svg += "<line x1=\"" + num(x0 - (t.major ? 6 : 3)) + "\" y1=\"" + num(py) + "\" x2=\"" +
                num(x0) + "\" y2=\"" + num(py) + "\"/>\n";
-        if (!t.label.empty())
-            svg += "<text x=\"" + num(x0 - 9) + "\" y=\"" + num(py + 4) +
-                   "\" text-anchor=\"end\" stroke=\"none\">" + t.label + "</text>\n";
+        if (!t.label.empty()) svg += tickLabel(t.label, t.exponent, x0 - 9, py + 4, "end");
     }
     svg += "<rect x=\"" + num(x0) + "\" y=\"" + num(y1) + "\" width=\"" + num(x1 - x0) +
            "\" height=\"" + num(y0 - y1) + "\" fill=\"none\"/>\n";
     svg += "</g>\n";
-    svg += "<text class=\"xlabel\" x=\"" + num(0.5 * (x0 + x1)) + "\" y=\"" +
+    svg += "<text class=\"xlabel\" stroke=\"none\" x=\"" + num(0.5 * (x0 + x1)) + "\" y=\"" +
            num(spec.height - 14.0) + "\" text-anchor=\"middle\">" + escapeXml(spec.x.label) +
            "</text>\n";
-    svg += "<text class=\"ylabel\" transform=\"translate(18," + num(0.5 * (y0 + y1)) +
+    svg += "<text class=\"ylabel\" stroke=\"none\" transform=\"translate(18," + num(0.5 * (y0 + y1)) +
            ") rotate(-90)\" text-anchor=\"middle\">" + escapeXml(spec.y.label) + "</text>\n";
 
     // Data, clipped to the frame (explicit axis ranges may cut points off).
-    svg += "<defs><clipPath id=\"frame\"><rect x=\"" + num(x0) + "\" y=\"" + num(y1) +
-           "\" width=\"" + num(x1 - x0) + "\" height=\"" + num(y0 - y1) +
-           "\"/></clipPath></defs>\n";
+    const Frame frame{x0, y1, x1, y0};
     bool anyHighlight = false;
     for (size_t i = 0; i < spec.series.size(); ++i) {
         const PlotSeries& s = spec.series[i];
         const std::string color = s.color.empty() ? kPalette[i % 10] : s.color;
-        svg += "<g class=\"series\" data-name=\"" + escapeXml(s.name) +
-               "\" clip-path=\"url(#frame)\">\n";
+        svg += "<g class=\"series\" data-name=\"" + escapeXml(s.name) + "\">\n";
         if (s.line) {
             std::string d;
-            bool pen = false;
+            bool havePrevious = false, pen = false;
+            double px0 = 0, py0 = 0;
             for (const PlotPoint& p : s.points) {
                 if (!plottable(p.x, spec.x.log) || !plottable(p.y, spec.y.log)) {
-                    pen = false;  // break the line at a point that cannot be shown
+                    havePrevious = pen = false;  // break the line at a point that cannot be shown
                     continue;
                 }
-                d += (pen ? "L" : "M") + num(xMap.toPixel(p.x)) + " " + num(yMap.toPixel(p.y));
-                pen = true;
+                const double px1 = xMap.toPixel(p.x), py1 = yMap.toPixel(p.y);
+                if (havePrevious) {
+                    double ax = px0, ay = py0, bx = px1, by = py1;
+                    if (frame.clip(ax, ay, bx, by)) {
+                        // A new subpath where the previous segment left the frame.
+                        if (!pen || ax != px0 || ay != py0) d += "M" + num(ax) + " " + num(ay);
+                        d += "L" + num(bx) + " " + num(by);
+                        pen = bx == px1 && by == py1;
+                    } else {
+                        pen = false;
+                    }
+                }
+                px0 = px1;
+                py0 = py1;
+                havePrevious = true;
             }
             if (!d.empty())
                 svg += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" + color +
@@ -270,8 +337,10 @@ std::string renderSvgPlot(const PlotSpec& spec) {
         for (const PlotPoint& p : s.points) {
             if (!plottable(p.x, spec.x.log) || !plottable(p.y, spec.y.log)) continue;
             const double px = xMap.toPixel(p.x), py = yMap.toPixel(p.y);
-            const std::string m = marker(s.marker, px, py, color, s.filled);
-            if (!m.empty()) svg += m + "\n";
+            if (!frame.contains(px, py)) continue;
+            std::string m = marker(s.marker, px, py, color, s.filled);
+            // class "point": a data marker, as opposed to a legend sample.
+            if (!m.empty()) svg += m.insert(m.size() - 2, " class=\"point\"") + "\n";
             if (p.highlighted) {
                 svg += ring(px, py) + "\n";
                 anyHighlight = true;
@@ -293,13 +362,13 @@ std::string renderSvgPlot(const PlotSpec& spec) {
                    (s.dashed ? " stroke-dasharray=\"6,4\"" : "") + "/>\n";
         const std::string m = marker(s.marker, lx + 14, ly, color, s.filled);
         if (!m.empty()) svg += m + "\n";
-        svg += "<text x=\"" + num(lx + 36) + "\" y=\"" + num(ly + 4) + "\">" + escapeXml(s.name) +
-               "</text>\n";
+        svg += "<text x=\"" + num(lx + 36) + "\" y=\"" + num(ly + 4) + "\" stroke=\"none\">" +
+               escapeXml(s.name) + "</text>\n";
         ly += 20;
     }
     if (anyHighlight && !spec.highlightLabel.empty()) {
         svg += ring(lx + 14, ly) + "\n";
-        svg += "<text x=\"" + num(lx + 36) + "\" y=\"" + num(ly + 4) + "\">" +
+        svg += "<text x=\"" + num(lx + 36) + "\" y=\"" + num(ly + 4) + "\" stroke=\"none\">" +
                escapeXml(spec.highlightLabel) + "</text>\n";
     }
     svg += "</g>\n";

@@ -56,6 +56,7 @@ struct PlotSpec {
 ///   with min >= max (or min <= 0 on a log axis).
 std::string renderSvgPlot(const PlotSpec& spec);
 
+/// Data markers carry class="point" (legend samples do not).
 /// Writes renderSvgPlot(spec) to `path` atomically; throws InputError on failure.
 void writeSvgPlot(const std::string& path, const PlotSpec& spec);
 

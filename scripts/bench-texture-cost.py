@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""What texturing costs per frame (issue 18): renders a textured scene with every
+--texture-filter / --texture-footprint and the same scene with every texture replaced
+by a constant colour (bump and normal maps dropped), one thread, interleaved rounds,
+and prints the median render time of each and the texture share of the frame.
+
+usage: scripts/bench-texture-cost.py [--raylab build/bin/raylab] [--scene scenes/textures.json]
+                                     [--repeats 5] [--width 320 --height 200]
+"""
+import argparse, json, os, re, statistics, subprocess, sys, tempfile
+
+ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+ap.add_argument("--raylab", default="build/bin/raylab")
+ap.add_argument("--scene", default="scenes/textures.json")
+ap.add_argument("--repeats", type=int, default=5)
+ap.add_argument("--width", type=int, default=320)
+ap.add_argument("--height", type=int, default=200)
+a = ap.parse_args()
+
+text = open(a.scene).read()
+doc = json.loads(re.sub(r"//[^\n]*", "", text))
+for m in doc.get("materials", {}).values():
+    for k in list(m):
+        if isinstance(m[k], dict):  # a texture or a checker
+            if k in ("bump", "normal_map"):
+                del m[k]
+            else:
+                m[k] = 0.7
+# Meshes keep their geometry but take a plain material instead of their MTL maps.
+doc.setdefault("materials", {})["untextured mesh"] = {"kd": [0.7, 0.7, 0.7]}
+for o in doc.get("objects", []):
+    if o.get("type") == "mesh":
+        o["material"] = "untextured mesh"
+# The untextured copy sits beside the scene so its relative mesh paths still resolve.
+fd, plain = tempfile.mkstemp(suffix=".json", dir=os.path.dirname(os.path.abspath(a.scene)))
+with os.fdopen(fd, "w") as f:
+    json.dump(doc, f)
+
+variants = [("untextured copy", plain, [])]
+for filt in ["point", "bilinear", "trilinear", "anisotropic"]:
+    for fp in (["cones", "differentials"] if filt in ("trilinear", "anisotropic") else ["differentials"]):
+        name = filt + (", " + fp if filt in ("trilinear", "anisotropic") else "")
+        variants.append((name, a.scene, ["--texture-filter", filt, "--texture-footprint", fp]))
+times = {v[0]: [] for v in variants}
+out = tempfile.mkdtemp()
+stats = os.path.join(out, "stats.json")
+try:
+    for _ in range(a.repeats):
+        for name, scene, flags in variants:
+            subprocess.run([a.raylab, "render", scene, "-o", os.path.join(out, "o.exr"),
+                            "--stats", stats, "--quiet", "--threads", "1", "--spp", "1",
+                            "--width", str(a.width), "--height", str(a.height)] + flags,
+                           check=True, stderr=subprocess.DEVNULL)
+            times[name].append(json.load(open(stats))["time_s"]["render"])
+finally:
+    os.remove(plain)
+base = statistics.median(times["untextured copy"])
+print("%s, %dx%d, 1 spp, 1 thread, median render time of %d interleaved rounds"
+      % (a.scene, a.width, a.height, a.repeats))
+print("| setting | render ms | texture share of the frame |")
+print("|---|---:|---:|")
+for name, t in times.items():
+    m = statistics.median(t)
+    share = "-" if name == "untextured copy" else "%.0f%%" % (100 * max(0.0, m - base) / m)
+    print("| %s | %.1f | %s |" % (name, 1e3 * m, share))
