@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/shape.h"
 #include "renderer/accel/hit.h"
 #include "renderer/filter_counts.h"
 #include "renderer/scene.h"
@@ -20,10 +21,16 @@ namespace raylab {
 
 class SurfaceFilter {
 public:
-    explicit SurfaceFilter(const Scene& scene);
+    /// `options`: the accelerator's intersector settings, with which a
+    /// candidate's surface parameters are recomputed for its alpha lookup.
+    explicit SurfaceFilter(const Scene& scene, const IntersectOptions& options = {});
 
     /// Whether any object needs the filter (else accelerators install none).
-    bool active() const { return m_active; }
+    bool active() const { return m_transmits || m_cutsOut; }
+    /// Whether some object transmits light (filtered shadows have work).
+    bool transmits() const { return m_transmits; }
+    /// Whether some object has an alpha cut-out.
+    bool cutsOut() const { return m_cutsOut; }
     /// Whether candidate hits on `object` must be shown to the filter.
     bool filters(uint32_t object) const { return m_filtered[object] != 0; }
 
@@ -42,8 +49,9 @@ public:
 
 private:
     const Scene& m_scene;
+    IntersectOptions m_options;
     std::vector<uint8_t> m_filtered;  ///< per object
-    bool m_active = false;
+    bool m_transmits = false, m_cutsOut = false;
     mutable tbb::enumerable_thread_specific<FilterCounts> m_counts;
 };
 

@@ -246,7 +246,7 @@ void SceneReader::readMaterials(const JsonValue& v, const std::string& path) {
 Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "a material",
                        {"ka", "kd", "ks", "shininess", "highlight", "km", "kt", "ior", "bump",
-                        "normal_map"});
+                        "normal_map", "alpha", "alpha_cutoff"});
     Material m;
     // A colour is a value or a texture ({"texture": ...} or {"checker": ...}),
     // which then stands for the whole colour (its constant is 1).
@@ -287,6 +287,25 @@ Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) 
                                               m_scene.textures);
         if (t.present) m.maps.normal = t.index;
     }
+    // Cut-outs: "alpha" is a coverage in [0, 1] or a mask texture; where it
+    // is below "alpha_cutoff" the surface is a hole.
+    const auto unit = [&](const char* key) {
+        const JsonValue& x = *f.get(key);
+        const double a = number(x, f.path(key));
+        if (!(a >= 0 && a <= 1))
+            fail(x, f.path(key), "must be in [0, 1] (got " + formatJsonNumber(a) + ")");
+        return a;
+    };
+    if (const JsonValue* x = f.get("alpha")) {
+        if (x->isObject()) {
+            const JsonTexture t = readJsonTexture(*this, *x, f.path("alpha"), JsonTextureUse::Alpha,
+                                                  m_textureFiles, m_scene.textures);
+            if (t.present) m.maps.alpha = t.index;
+        } else {
+            m.alpha = unit("alpha");
+        }
+    }
+    if (f.get("alpha_cutoff")) m.alphaCutoff = unit("alpha_cutoff");
     return m;
 }
 

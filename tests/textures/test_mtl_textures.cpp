@@ -42,7 +42,7 @@ TEST_CASE("mtl maps: colour, exponent, bump and normal maps with their options")
               "map_Ns -imfchan r a.png\n"
               "bump -bm 0.25 a.png\n"
               "norm a.png\n"
-              "map_d a.png\n"
+              "map_Tr a.png\n"
               "map_Ka -bm 2 a.png\n");
     ObjLoadOptions o;
     o.printWarnings = false;

@@ -1,0 +1,139 @@
+// Alpha cut-outs (issue 19): where a material's alpha is below its cut-off
+// the surface is a hole for every ray. Exact pixels of a masked quad over a
+// lit floor, derived by hand below, through both accelerators: camera rays
+// through the holes, shadow feelers through the holes, two masks in a row,
+// and a uniform alpha on an analytic sphere.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/io_test_helpers.h"
+#include "renderer/effects.h"
+#include "renderer/io/scene_loader.h"
+#include "renderer/render_setup.h"
+
+using namespace raylab;
+using raylab::test::TempDir;
+
+namespace {
+
+/// A unit quad in z = `z` over x, y in [0, 1], uv = (x, y), facing +z.
+std::string quadObj(double z) {
+    const std::string h = std::to_string(z);
+    return "v 0 0 " + h + "\nv 1 0 " + h + "\nv 1 1 " + h + "\nv 0 1 " + h +
+           "\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+}
+
+/// The scene: a floor (kd 0.5) at z = 0; a white quad at z = 1 whose alpha is
+/// a checker of 2 × 2 squares, black (a hole) where floor(2u) + floor(2v) is
+/// even; `upperMask`: also a dark quad (kd 0.25) at z = 2 with a 4 × 4
+/// checker. One directional light travelling along (-1, 0, -1)/√2, no
+/// ambient; an orthographic camera looking down on x in [-1, 1], y in [0, 1].
+std::string sceneJson(bool upperMask, const std::string& extra = "") {
+    std::string objects =
+        R"({"type": "polygon", "vertices": [[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]], "material": "floor"},
+           {"type": "mesh", "file": "q1.obj", "material": "mask1"})";
+    if (upperMask) objects += R"(, {"type": "mesh", "file": "q2.obj", "material": "mask2"})";
+    return R"({"camera": {"type": "orthographic", "eye": [0, 0.5, 5], "direction": [0, 0, -1], "width": 2},
+        "lights": [{"type": "directional", "direction": [-1, 0, -1]}],
+        "materials": {
+          "floor": {"kd": [0.5, 0.5, 0.5]},
+          "mask1": {"kd": [1, 1, 1], "alpha": {"checker": [[0, 0, 0], [1, 1, 1]], "scale": [2, 2]}},
+          "mask2": {"kd": [0.25, 0.25, 0.25], "alpha": {"checker": [[0, 0, 0], [1, 1, 1]], "scale": [4, 4]}})" +
+           extra + R"(},
+        "objects": [)" +
+           objects + "]}";
+}
+
+bool hole(double u, double v, double squares) {
+    return (int(std::floor(squares * u)) + int(std::floor(squares * v))) % 2 == 0;
+}
+
+/// The pixel at (x, y) by hand. Lit surfaces facing +z see N·L = 1/√2.
+double expected(double x, double y, bool upperMask) {
+    const double lit = 1 / std::sqrt(2.0);
+    const bool inQuad = x > 0 && x < 1;
+    if (upperMask && inQuad && !hole(x, y, 4)) return 0.25 * lit;  // the z = 2 quad
+    if (inQuad && !hole(x, y, 2)) return 1.0 * lit;                 // the z = 1 quad
+    // The floor: its feeler towards (+1, 0, +1) meets z = 1 at x + 1 (the z = 1
+    // quad when that is in [0, 1]) and z = 2 at x + 2 (beyond the upper quad).
+    const double xs = x + 1;
+    const bool shadowed = xs > 0 && xs < 1 && !hole(xs, y, 2);
+    return shadowed ? 0.0 : 0.5 * lit;
+}
+
+}  // namespace
+
+TEST_CASE("cut-outs: a masked quad over a lit floor, exact pixels, both accelerators") {
+    for (bool upperMask : {false, true}) {
+        CAPTURE(upperMask);
+        TempDir dir;
+        dir.write("q1.obj", quadObj(1));
+        dir.write("q2.obj", quadObj(2));
+        const Scene scene = loadScene(dir.write("s.json", sceneJson(upperMask)));
+        const RenderOptions options = resolveRenderOptions(scene, {});
+        CHECK(analyseEffects(scene, options).cutOuts);
+        int holes = 0, shadows = 0;
+        for (const char* accel : {"embree", "naive"}) {
+            CAPTURE(accel);
+            // 16 × 8 pixels of 0.125: centres at x = -0.9375 + 0.125 i, never
+            // on a checker edge (multiples of 0.25).
+            const Film film = test::renderFilm(scene, accel, 16, 8);
+            for (int j = 0; j < 8; ++j) {
+                for (int i = 0; i < 16; ++i) {
+                    const double x = -1 + 0.125 * (i + 0.5), y = 1 - 0.125 * (j + 0.5);
+                    CAPTURE(x);
+                    CAPTURE(y);
+                    const size_t p = film.index(i, j);
+                    const double want = expected(x, y, upperMask);
+                    CHECK(film.rgba[4 * p] == doctest::Approx(want).epsilon(1e-6));
+                    CHECK(film.rgba[4 * p + 2] == doctest::Approx(want).epsilon(1e-6));
+                    if (x > 0 && hole(x, y, 2)) ++holes;
+                    if (want == 0) ++shadows;
+                }
+            }
+        }
+        // The scene has both kinds of pixel, so the checks above saw them.
+        CHECK(holes > 0);
+        CHECK(shadows > 0);
+    }
+}
+
+TEST_CASE("cut-outs: a uniform alpha below the cut-off removes any primitive, shadow too") {
+    TempDir dir;
+    dir.write("q1.obj", quadObj(1));
+    const std::string without = sceneJson(false);
+    const auto render = [&](const std::string& json, const char* accel) {
+        return test::renderFilm(loadScene(dir.write("s.json", json)), accel, 16, 8);
+    };
+    // A sphere over the floor's shadowed and lit parts, fully below its cut-off.
+    std::string with = without;
+    const std::string sphere =
+        R"({"type": "sphere", "center": [-0.5, 0.5, 0.5], "radius": 0.4, "material": "ghost"}, )";
+    with.insert(with.find("\"objects\": [") + 12, sphere);
+    with.insert(with.find("\"mask2\""), R"("ghost": {"kd": [1, 0, 0], "alpha": 0.4, "alpha_cutoff": 0.5}, )");
+    for (const char* accel : {"embree", "naive"}) {
+        CAPTURE(accel);
+        const Film a = render(without, accel), b = render(with, accel);
+        CHECK(a.rgba == b.rgba);
+    }
+    // At alpha 0.6 it is there (and red).
+    std::string visible = with;
+    visible.replace(visible.find("\"alpha\": 0.4"), 12, "\"alpha\": 0.6");
+    const Film c = render(visible, "embree");
+    const size_t p = c.index(3, 4);  // x = -0.5625, y = 0.4375: on the sphere
+    CHECK(c.rgba[4 * p] > 0);
+    CHECK(c.rgba[4 * p + 1] == 0);
+}
+
+TEST_CASE("cut-outs: alpha values are checked") {
+    TempDir dir;
+    dir.write("q1.obj", quadObj(1));
+    for (const char* bad : {R"(, "bad": {"alpha": 1.5})", R"(, "bad": {"alpha_cutoff": -0.1})"}) {
+        CAPTURE(bad);
+        const test::Failure f =
+            test::failureOf([&] { loadScene(dir.write("s.json", sceneJson(false, bad))); });
+        CHECK(f.message.find("must be in [0, 1]") != std::string::npos);
+    }
+}
