@@ -6,12 +6,18 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "geometry/random.h"
 #include "io/io_test_helpers.h"
+#include "renderer/accel/embree_accelerator.h"
+#include "renderer/accel/naive_accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render_setup.h"
+#include "renderer/whitted_integrator.h"
 
 using namespace raylab;
 using raylab::test::TempDir;
@@ -136,4 +142,97 @@ TEST_CASE("cut-outs: alpha values are checked") {
             test::failureOf([&] { loadScene(dir.write("s.json", sceneJson(false, bad))); });
         CHECK(f.message.find("must be in [0, 1]") != std::string::npos);
     }
+}
+
+namespace {
+
+/// Analytic shapes (Embree user geometry, which the shadow cache names as
+/// occluders) over a floor: a solid sphere, and beside it a sphere and a
+/// polygon card whose checker masks cut holes; a light low enough that
+/// their shadows lie side by side, seen from above through the holes.
+std::string cacheSceneJson() {
+    return R"({"camera": {"type": "orthographic", "eye": [0, 0, 6], "direction": [0, 0, -1], "width": 6},
+        "lights": [{"type": "directional", "direction": [-0.6, 0.2, -1]}],
+        "ambient": [0.1, 0.1, 0.1],
+        "materials": {
+          "floor": {"kd": [0.5, 0.5, 0.5]},
+          "solid": {"kd": [0.2, 0.6, 0.2]},
+          "holes": {"kd": [0.8, 0.2, 0.2], "alpha": {"checker": [[0, 0, 0], [1, 1, 1]], "scale": [12, 6]}},
+          "card": {"kd": [0.2, 0.2, 0.8], "alpha": {"checker": [[0, 0, 0], [1, 1, 1]], "scale": [5, 5]}}},
+        "objects": [
+          {"type": "polygon", "vertices": [[-8, -8, 0], [8, -8, 0], [8, 8, 0], [-8, 8, 0]], "material": "floor"},
+          {"type": "sphere", "center": [-1.6, 0.3, 0.9], "radius": 0.7, "material": "solid"},
+          {"type": "sphere", "center": [-0.1, 0.3, 0.9], "radius": 0.7, "material": "holes"},
+          {"type": "polygon", "sides": "both", "material": "card",
+           "vertices": [[0.9, -1, 0.6], [2.3, -1, 0.6], [2.3, 1, 1.2], [0.9, 1, 1.2]]},
+          {"type": "sphere", "center": [1.6, 1.9, 0.5], "radius": 0.4, "material": "solid"}]})";
+}
+
+}  // namespace
+
+TEST_CASE("cut-outs: the shadow cache changes no pixel, holes in shadows next to solid ones") {
+    TempDir dir;
+    const Scene scene = loadScene(dir.write("s.json", cacheSceneJson()));
+    RenderOverrides o;
+    o.width = 96;
+    o.height = 64;
+    const RenderOptions options = resolveRenderOptions(scene, o);
+    const EffectSet effects = analyseEffects(scene, options);
+    REQUIRE(effects.cutOuts);
+    REQUIRE(effects.has(kShadows));
+    EmbreeAccelerator embree(scene, options.accelOptions);
+    NaiveAccelerator naive(scene, options.accelOptions);
+    std::vector<Color> reference;
+    for (const Accelerator* accel : {static_cast<const Accelerator*>(&naive),
+                                     static_cast<const Accelerator*>(&embree)}) {
+        const WhittedIntegrator integrator(scene, *accel, options, effects);
+        // Row by row, one cache carried across pixels as a render's worker
+        // carries it: a solid sphere's hint reaches pixels in a hole's shadow.
+        ShadowCache cache;
+        int lit = 0, dark = 0;
+        size_t i = 0;
+        for (int y = 0; y < o.height.value(); ++y) {
+            for (int x = 0; x < o.width.value(); ++x, ++i) {
+                const Ray ray = scene.camera.generateRay(x + 0.5, y + 0.5, *o.width, *o.height);
+                RayCounters counters;
+                SampleRays spent;
+                const Color cached = integrator.Li(ray, counters, nullptr, spent, &cache);
+                const Color uncached = integrator.Li(ray, counters, nullptr, spent, nullptr);
+                CAPTURE(x);
+                CAPTURE(y);
+                CHECK(cached.r == uncached.r);
+                CHECK(cached.g == uncached.g);
+                CHECK(cached.b == uncached.b);
+                if (reference.size() < size_t(*o.width) * size_t(*o.height))
+                    reference.push_back(uncached);
+                else
+                    CHECK((reference[i].r == cached.r && reference[i].g == cached.g &&
+                           reference[i].b == cached.b));
+                // The floor (grey): in shadow it keeps the ambient only.
+                if (cached.r == cached.g && cached.g == cached.b) (cached.r > 0.06 ? lit : dark)++;
+            }
+        }
+        // Floor both lit and shadowed, so the cache had occluders to name.
+        CHECK(lit > 500);
+        CHECK(dark > 200);
+    }
+    // A hint naming a masked primitive must not skip its mask: every user
+    // entry as the hint of shadow feelers through the holes gives occluded()'s
+    // answer (entries: floor 0, solid 1, holes 2, card 3, solid 4).
+    SplitMix64 rng(11);
+    int blocked = 0, passed = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const Vec3 from{rng.uniform(-3, 3), rng.uniform(-2, 2), 0.01};
+        const Vec3 to = from + Vec3{0.6, -0.2, 1} * 4.0;
+        const Ray ray{from, to - from};
+        const bool expected = naive.occluded(ray, 1e-9, 1.0);
+        CHECK(embree.occluded(ray, 1e-9, 1.0) == expected);
+        for (uint32_t entry = 0; entry < 5; ++entry) {
+            OcclusionHint hint{entry};
+            CHECK(embree.occluded(ray, 1e-9, 1.0, hint) == expected);
+        }
+        (expected ? blocked : passed)++;
+    }
+    CHECK(blocked > 300);
+    CHECK(passed > 300);
 }
