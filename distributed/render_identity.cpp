@@ -48,6 +48,7 @@ std::string optionWords(const RenderOptions& o) {
     add("spawn_reference", exact(o.spawn.reference));
     add("spd", o.spd ? "on" : "off");
     add("shadows", shadowModeName(o.shadows));
+    add("alpha_cutoff", o.accelOptions.alphaCutoff ? exact(*o.accelOptions.alphaCutoff) : "materials");
     add("texture_filter", textureFilterName(o.textures.filter));
     add("texture_footprint", textureFootprintName(o.textures.footprint));
     add("effects", o.forceAllEffects ? "all" : "auto");

@@ -51,8 +51,8 @@ EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
         if (o.shape && o.shape->hasShadingNormals()) e.smoothNormals = true;
     e.antialiasing = options.spp > 1 || options.adaptiveThreshold > 0;
     e.filteredShadows = options.shadows == ShadowMode::Filtered && e.has(kShadows) &&
-                        SurfaceFilter(scene).transmits();
-    e.cutOuts = SurfaceFilter(scene).cutsOut();
+                        SurfaceFilter(scene, options.accelOptions).transmits();
+    e.cutOuts = SurfaceFilter(scene, options.accelOptions).cutsOut();
     e.aovs = options.wantAovs;
     return e;
 }

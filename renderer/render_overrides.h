@@ -31,6 +31,7 @@ struct RenderOverrides {
     std::optional<EffectsMode> effects;
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
+    std::optional<double> alphaCutoff;       ///< --alpha-cutoff, JSON render.alpha_cutoff
     std::optional<TextureFilter> textureFilter;        ///< --texture-filter
     std::optional<TextureFootprint> textureFootprint;  ///< --texture-footprint
     bool spd = false;

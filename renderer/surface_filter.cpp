@@ -6,16 +6,19 @@
 
 namespace raylab {
 
-SurfaceFilter::SurfaceFilter(const Scene& scene, const IntersectOptions& options)
-    : m_scene(scene), m_options(options), m_filtered(scene.objects.size(), 0) {
+SurfaceFilter::SurfaceFilter(const Scene& scene, const AccelOptions& options)
+    : m_scene(scene),
+      m_options(options.intersect),
+      m_cutoff(options.alphaCutoff),
+      m_filtered(scene.objects.size(), 0) {
     const auto valid = [&](uint32_t m) { return m < scene.materials.size(); };
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         bool transmits = valid(o.material) && scene.materials[o.material].transmissive();
-        bool cutsOut = valid(o.material) && scene.materials[o.material].cutsOut();
+        bool cutsOut = valid(o.material) && scene.materials[o.material].cutsOut(m_cutoff);
         for (uint32_t m : o.faceMaterials) {
             transmits = transmits || (valid(m) && scene.materials[m].transmissive());
-            cutsOut = cutsOut || (valid(m) && scene.materials[m].cutsOut());
+            cutsOut = cutsOut || (valid(m) && scene.materials[m].cutsOut(m_cutoff));
         }
         m_filtered[i] = transmits || cutsOut;
         m_transmits = m_transmits || transmits;
@@ -26,7 +29,7 @@ SurfaceFilter::SurfaceFilter(const Scene& scene, const IntersectOptions& options
 bool SurfaceFilter::cutOut(const Ray& ray, const Hit& candidate) const {
     const Object& o = m_scene.objects[candidate.object];
     const Material& m = m_scene.materials[o.materialOf(candidate.prim)];
-    if (!m.cutsOut()) return false;
+    if (!m.cutsOut(m_cutoff)) return false;
     double alpha = m.alpha;
     if (m.maps.alpha != MaterialMaps::kNone) {
         // The mask is looked up at surface parameters both accelerators
@@ -46,7 +49,7 @@ bool SurfaceFilter::cutOut(const Ray& ray, const Hit& candidate) const {
         const Texture& mask = m_scene.textures[m.maps.alpha];
         alpha *= mask.scalar(TextureCoords{g.uv, {0, 0}, {0, 0}}, TextureFilter::Bilinear);
     }
-    if (alpha >= m.alphaCutoff) return false;
+    if (alpha >= m.cutoff(m_cutoff)) return false;
     ++m_counts.local().cutOut;
     return true;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
+#include "renderer/accel/accel_options.h"
 #include "renderer/accel/hit.h"
 #include "renderer/filter_counts.h"
 #include "renderer/scene.h"
@@ -21,9 +22,10 @@ namespace raylab {
 
 class SurfaceFilter {
 public:
-    /// `options`: the accelerator's intersector settings, with which a
-    /// candidate's surface parameters are recomputed for its alpha lookup.
-    explicit SurfaceFilter(const Scene& scene, const IntersectOptions& options = {});
+    /// `options`: the accelerator's settings: its intersector settings, with
+    /// which a candidate's surface parameters are recomputed for its alpha
+    /// lookup, and the cut-off override (--alpha-cutoff).
+    explicit SurfaceFilter(const Scene& scene, const AccelOptions& options = {});
 
     /// Whether any object needs the filter (else accelerators install none).
     bool active() const { return m_transmits || m_cutsOut; }
@@ -50,6 +52,7 @@ public:
 private:
     const Scene& m_scene;
     IntersectOptions m_options;
+    std::optional<double> m_cutoff;  ///< --alpha-cutoff, else each material's
     std::vector<uint8_t> m_filtered;  ///< per object
     bool m_transmits = false, m_cutsOut = false;
     mutable tbb::enumerable_thread_specific<FilterCounts> m_counts;

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "shading/color.h"
@@ -72,8 +73,14 @@ struct Material : SurfaceOptics {
     double alpha = 1;
     double alphaCutoff = 0.5;
 
+    /// The cut-off in force: `override` (--alpha-cutoff) when set, else alphaCutoff.
+    double cutoff(const std::optional<double>& override = std::nullopt) const {
+        return override.value_or(alphaCutoff);
+    }
     /// Whether some hit on this material may be a hole (renderer/surface_filter).
-    bool cutsOut() const { return maps.alpha != MaterialMaps::kNone || alpha < alphaCutoff; }
+    bool cutsOut(const std::optional<double>& override = std::nullopt) const {
+        return maps.alpha != MaterialMaps::kNone || alpha < cutoff(override);
+    }
 };
 
 }  // namespace raylab

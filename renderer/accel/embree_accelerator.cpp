@@ -41,7 +41,8 @@ auto namingObject(const Object& object, F&& f) {
 
 EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& options,
                                      const std::string& deviceConfig)
-    : m_device(deviceConfig), m_origin(options.origin), m_filter(scene, options.intersect), m_scene(m_device) {
+    : m_device(deviceConfig), m_origin(options.origin), m_filter(scene, options),
+      m_scene(m_device) {
     m_device.check("rtcNewScene");
     if (!isFinite(m_origin))
         throw std::invalid_argument("embree: accelerator origin must be finite");

@@ -111,7 +111,7 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     const JsonFields f(*this, v, path, "the render settings",
                        {"adaptive", "adaptive_levels", "min_weight", "seed", "max_rays", "precision",
                         "epsilon", "bvh_quality", "robust", "accel", "shadows", "texture_filter",
-                        "texture_footprint"});
+                        "texture_footprint", "alpha_cutoff"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -132,6 +132,12 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
     if (const JsonValue* x = f.get("shadows"))
         r.shadows = choice(*x, f.path("shadows"), shadowModeNames());
+    if (const JsonValue* x = f.get("alpha_cutoff")) {
+        r.alphaCutoff = nonNegative(*x, f.path("alpha_cutoff"));
+        if (*r.alphaCutoff > 1)
+            fail(*x, f.path("alpha_cutoff"),
+                 "must be in [0, 1] (got " + formatJsonNumber(*r.alphaCutoff) + ")");
+    }
     if (const JsonValue* x = f.get("bvh_quality"))
         r.bvhQuality = choice(*x, f.path("bvh_quality"), bvhQualityNames());
     if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));

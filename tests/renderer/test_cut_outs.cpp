@@ -236,3 +236,56 @@ TEST_CASE("cut-outs: the shadow cache changes no pixel, holes in shadows next to
     CHECK(blocked > 300);
     CHECK(passed > 300);
 }
+
+TEST_CASE("cut-outs: --alpha-cutoff overrides every material's cut-off, and render.alpha_cutoff") {
+    TempDir dir;
+    dir.write("q1.obj", quadObj(1));
+    // The ghost sphere has alpha 0.4: a hole at its own cut-off 0.5, there at 0.3.
+    std::string json = sceneJson(false);
+    json.insert(json.find("\"objects\": [") + 12,
+                R"({"type": "sphere", "center": [-0.5, 0.5, 0.5], "radius": 0.4, "material": "ghost"}, )");
+    const auto withGhost = [&](const std::string& cutoff) {
+        std::string j = json;
+        j.insert(j.find("\"mask1\""), R"("ghost": {"kd": [1, 0, 0], "alpha": 0.4, "alpha_cutoff": )" +
+                                          cutoff + "}, ");
+        return j;
+    };
+    const auto film = [&](const std::string& text, std::optional<double> cutoff, const char* accel) {
+        const Scene scene = loadScene(dir.write("s.json", text));
+        RenderOverrides o;
+        o.width = 16;
+        o.height = 8;
+        o.spp = 1;
+        o.alphaCutoff = cutoff;
+        o.accel = std::string(accel) == "naive" ? AcceleratorKind::Naive : AcceleratorKind::Embree;
+        const RenderOptions options = resolveRenderOptions(scene, o);
+        const auto a = makeAccelerator(options.accel, scene, options.accelOptions);
+        return render(scene, *a, options, analyseEffects(scene, options)).film.rgba;
+    };
+    for (const char* accel : {"embree", "naive"}) {
+        CAPTURE(accel);
+        const auto own03 = film(withGhost("0.3"), std::nullopt, accel);
+        const auto own05 = film(withGhost("0.5"), std::nullopt, accel);
+        CHECK(own03 != own05);
+        CHECK(film(withGhost("0.5"), 0.3, accel) == own03);  // the flag wins
+        CHECK(film(withGhost("0.3"), 0.5, accel) == own05);
+        // The masks' checker (0 or 1) cuts the same at any cut-off in (0, 1].
+        CHECK(film(withGhost("0.3"), 0.9, accel) == own05);
+        // A cut-off of 0 keeps every hit: no hole anywhere, no mask shadow gap.
+        std::string solid = withGhost("0");
+        for (const char* m : {"\"mask1\": {", "\"mask2\": {"})
+            solid.replace(solid.find(m), std::string(m).size(), std::string(m) + "\"alpha_cutoff\": 0, ");
+        CHECK(film(withGhost("0.5"), 0.0, accel) == film(solid, std::nullopt, accel));
+        // JSON render.alpha_cutoff, overridden by the flag in turn.
+        std::string keyed = withGhost("0.5");
+        keyed.insert(keyed.find("\"lights\""), R"("render": {"alpha_cutoff": 0.3}, )");
+        CHECK(film(keyed, std::nullopt, accel) == own03);
+        CHECK(film(keyed, 0.5, accel) == own05);
+    }
+    // Out of range: one error line at the key.
+    std::string bad = withGhost("0.5");
+    bad.insert(bad.find("\"lights\""), R"("render": {"alpha_cutoff": 1.5}, )");
+    const test::Failure f = test::failureOf([&] { loadScene(dir.write("s.json", bad)); });
+    CHECK(f.message.find("alpha_cutoff") != std::string::npos);
+    CHECK(f.message.find("must be in [0, 1]") != std::string::npos);
+}
