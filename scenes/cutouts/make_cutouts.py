@@ -59,6 +59,23 @@ def fence(size=64):
     return rows
 
 
+def soft_dots(size=64):
+    """Grey coverage mask of scenes/accuracy/soft_mask.json: one dot per
+    tile, opaque to 0.15 tile from its centre and fading linearly to nothing
+    at 0.45, so a cut-off c puts the dot's edge at 0.45 - 0.3 c: every
+    cut-off gives a different silhouette (the accuracy sweep's
+    "alpha-cutoff" rows)."""
+    rows = []
+    for y in range(size):
+        row = []
+        for x in range(size):
+            r = math.hypot((x + 0.5) / size - 0.5, (y + 0.5) / size - 0.5)
+            a = min(1.0, max(0.0, (0.45 - r) / 0.3))
+            row.append((int(round(255 * a)),))
+        rows.append(row)
+    return rows
+
+
 def plant_obj(cards=7):
     """Leaf cards around a stem: each a quad from the stem outwards and up,
     uv (0, 0) at the stem end; MTL with map_Kd and map_d on the same PNG."""
@@ -92,4 +109,5 @@ def plant_obj(cards=7):
 if __name__ == "__main__":
     write_png("../cutouts/leaf.png", 128, 128, leaf(), channels=4)
     write_png("../cutouts/fence.png", 64, 64, fence(), channels=4)
+    write_png("../cutouts/soft_dots.png", 64, 64, soft_dots(), channels=1)
     plant_obj()
