@@ -165,7 +165,8 @@ const CommandFlags kRenderFlags{
      {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
      {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
      {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
-     {"--precision", "", true},     {"--shadows", "", true},     {"--epsilon", "", true},
+     {"--precision", "", true},     {"--shadows", "", true},     {"--alpha-cutoff", "", true},
+     {"--epsilon", "", true},
      {"--polygons", "", true},      {"--effects", "", true},     {"--texture-filter", "", true},
      {"--texture-footprint", "", true}}};
 
