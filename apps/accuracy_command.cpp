@@ -43,6 +43,8 @@ const char* const kAccuracyHelp =
     "  bvh         Embree build quality low, high; robust traversal\n"
     "  shadows     opaque shadow feelers (the classic Whitted shadow) instead of filtered\n"
     "  texture     (scenes with textures) every --texture-filter with every --texture-footprint\n"
+    "  alpha-cutoff  (scenes with cut-outs) --alpha-cutoff 0.1, 0.25, 0.5, 0.75, 0.9; the reference\n"
+    "              is then the mean over 16 cut-offs spread over (0, 1): alpha as coverage\n"
     "  combo       preview, spp 4 + depth 3, adaptive + pruning, spp 16 + depth 8 + robust\n"
     "For each setting: build and render time (wall clock, and CPU time of all threads; medians\n"
     "of interleaved runs), rays traced, RMSE, PSNR and largest channel error in linear RGB\n"
@@ -178,7 +180,8 @@ int accuracyCommand(const std::vector<std::string>& args) {
     options.threads = cli.threads;
     options.visibleLevels = cli.visible;
     options.keepImages = !cli.html.empty();
-    for (AccuracySetting& s : accuracySweepSettings(cli.quick, hasTextures(scene))) {
+    for (AccuracySetting& s :
+         accuracySweepSettings(cli.quick, hasTextures(scene), hasCutOuts(scene))) {
         const bool wanted =
             cli.knobs.empty() || s.knob == "default" ||
             std::find(cli.knobs.begin(), cli.knobs.end(), s.knob) != cli.knobs.end();

@@ -138,6 +138,9 @@ const char* const kRenderHelp =
     "  --shadows opaque|filtered  shadow feelers through transmitters: filtered (default) dims the\n"
     "                           light by the kt of every transmitter crossed (no refraction of the\n"
     "                           feeler); opaque blocks it, the classic Whitted shadow (and --spd's)\n"
+    "  --alpha-cutoff C         the cut-off of every material's alpha, in [0, 1]: a hit whose\n"
+    "                           alpha (x its mask) is below C is a hole (default: each\n"
+    "                           material's alpha_cutoff, 0.5 unless set)\n"
     "  --epsilon E              lecture-style self-intersection avoidance: secondary rays accept\n"
     "                           t > E (default: robust offset along the normal, scaled to |p|)\n"
     "  --polygons watertight|projected|triangles   planar polygons: the watertight ray-space\n"
@@ -179,7 +182,8 @@ const CommandFlags kRenderFlags{
      {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
      {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
      {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
-     {"--precision", "", true},     {"--shadows", "", true},     {"--epsilon", "", true},
+     {"--precision", "", true},     {"--shadows", "", true},     {"--alpha-cutoff", "", true},
+     {"--epsilon", "", true},
      {"--polygons", "", true},      {"--effects", "", true},     {"--texture-filter", "", true},
      {"--texture-footprint", "", true}}};
 
@@ -293,6 +297,7 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--bvh-quality") o.bvhQuality = p.choice(a, bvhQualityNames());
         else if (a == "--robust") o.robust = true;
         else if (a == "--shadows") o.shadows = p.choice(a, shadowModeNames());
+        else if (a == "--alpha-cutoff") o.alphaCutoff = p.number(a, 0, 1);
         else if (a == "--precision") o.precision = p.choice(a, precisionNames());
         else if (a == "--epsilon") o.epsilon = p.number(a, 0, 1e30);
         else if (a == "--eye") cli.camera.eye = toVec3(p.triple(a));

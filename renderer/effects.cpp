@@ -17,6 +17,7 @@ std::vector<std::string> EffectSet::names() const {
     if (antialiasing) n.push_back("antialiasing");
     if (aovs) n.push_back("aovs");
     if (filteredShadows) n.push_back("filtered_shadows");
+    if (cutOuts) n.push_back("cut_outs");
     return n;
 }
 
@@ -50,7 +51,8 @@ EffectSet analyseEffects(const Scene& scene, const RenderOptions& options) {
         if (o.shape && o.shape->hasShadingNormals()) e.smoothNormals = true;
     e.antialiasing = options.spp > 1 || options.adaptiveThreshold > 0;
     e.filteredShadows = options.shadows == ShadowMode::Filtered && e.has(kShadows) &&
-                        SurfaceFilter(scene).active();
+                        SurfaceFilter(scene, options.accelOptions).transmits();
+    e.cutOuts = SurfaceFilter(scene, options.accelOptions).cutsOut();
     e.aovs = options.wantAovs;
     return e;
 }

@@ -34,6 +34,9 @@ struct EffectSet {
     /// Shadow feelers pass through transmitters (ShadowMode::Filtered, and
     /// some shaded surface can see a transmitter between it and a light).
     bool filteredShadows = false;
+    /// Some material has an alpha cut-out: the accelerators filter its hits
+    /// (no kernel of its own: a hole is decided before shading).
+    bool cutOuts = false;
 
     bool has(EffectBits b) const { return (kernel & b) != 0; }
     bool textures() const { return has(kTextures); }

@@ -33,6 +33,7 @@ struct RenderOverrides {
     std::optional<PolygonTest> polygonTest;  ///< --polygons projected|watertight
     std::optional<ShadowMode> shadows;       ///< --shadows opaque|filtered
     std::optional<AlphaMode> alpha;          ///< --alpha background|transparent|opaque
+    std::optional<double> alphaCutoff;       ///< --alpha-cutoff, JSON render.alpha_cutoff
     std::optional<TextureFilter> textureFilter;        ///< --texture-filter
     std::optional<TextureFootprint> textureFootprint;  ///< --texture-footprint
     bool spd = false;

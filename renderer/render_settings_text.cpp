@@ -48,6 +48,8 @@ std::string renderSettingsText(const RenderOptions& o) {
     add("spd", o.spd ? "on" : "off");
     add("shadows", shadowModeName(o.shadows));
     add("alpha", alphaModeName(o.alpha));
+    add("alpha_cutoff",
+        o.accelOptions.alphaCutoff ? exact(*o.accelOptions.alphaCutoff) : "materials");
     add("texture_filter", textureFilterName(o.textures.filter));
     add("texture_footprint", textureFootprintName(o.textures.footprint));
     add("effects", o.forceAllEffects ? "all" : "auto");

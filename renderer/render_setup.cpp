@@ -32,6 +32,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
     if (o.shadows) r.shadows = *o.shadows;
     if (o.alpha) r.alpha = *o.alpha;
+    if (o.alphaCutoff) r.accelOptions.alphaCutoff = *o.alphaCutoff;
     if (o.epsilon) {
         r.spawn.mode = OffsetMode::FixedEpsilon;
         r.spawn.epsilon = *o.epsilon;

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/shape.h"
+#include "renderer/accel/accel_options.h"
 #include "renderer/accel/hit.h"
 #include "renderer/filter_counts.h"
 #include "renderer/scene.h"
@@ -20,10 +22,17 @@ namespace raylab {
 
 class SurfaceFilter {
 public:
-    explicit SurfaceFilter(const Scene& scene);
+    /// `options`: the accelerator's settings: its intersector settings, with
+    /// which a candidate's surface parameters are recomputed for its alpha
+    /// lookup, and the cut-off override (--alpha-cutoff).
+    explicit SurfaceFilter(const Scene& scene, const AccelOptions& options = {});
 
     /// Whether any object needs the filter (else accelerators install none).
-    bool active() const { return m_active; }
+    bool active() const { return m_transmits || m_cutsOut; }
+    /// Whether some object transmits light (filtered shadows have work).
+    bool transmits() const { return m_transmits; }
+    /// Whether some object has an alpha cut-out.
+    bool cutsOut() const { return m_cutsOut; }
     /// Whether candidate hits on `object` must be shown to the filter.
     bool filters(uint32_t object) const { return m_filtered[object] != 0; }
 
@@ -42,8 +51,10 @@ public:
 
 private:
     const Scene& m_scene;
+    IntersectOptions m_options;
+    std::optional<double> m_cutoff;  ///< --alpha-cutoff, else each material's
     std::vector<uint8_t> m_filtered;  ///< per object
-    bool m_active = false;
+    bool m_transmits = false, m_cutsOut = false;
     mutable tbb::enumerable_thread_specific<FilterCounts> m_counts;
 };
 

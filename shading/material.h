@@ -1,7 +1,9 @@
 #pragma once
 // Whitted material: plain data, no behaviour.
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "shading/color.h"
@@ -45,7 +47,16 @@ struct MaterialMaps {
     uint32_t bump = kNone;       ///< scalar height map (bump, map_bump)
     double bumpScale = 1;        ///< height = bumpScale × map value, in scene units (-bm)
     uint32_t normal = kNone;     ///< tangent-space normal map (norm)
+    uint32_t alpha = kNone;      ///< scalar coverage mask (map_d, JSON "alpha"): see Material
 
+    /// Every texture slot, for code that must treat them all alike (a loader
+    /// offsetting indices into a scene's textures): a new slot goes here.
+    std::array<uint32_t*, 9> slots() {
+        return {&ka, &kd, &ks, &km, &kt, &shininess, &bump, &normal, &alpha};
+    }
+
+    /// Whether shading reads a texture (the alpha mask is read by the
+    /// accelerators' surface filter, before shading).
     bool any() const {
         return ka != kNone || kd != kNone || ks != kNone || km != kNone || kt != kNone ||
                shininess != kNone || bump != kNone || normal != kNone;
@@ -55,6 +66,21 @@ struct MaterialMaps {
 struct Material : SurfaceOptics {
     std::string name;
     MaterialMaps maps;
+    /// Coverage for cut-outs: alpha × the alpha map (when present) at the
+    /// hit's uv; where it is below alphaCutoff the surface is a hole for
+    /// every ray (camera, secondary and shadow). Not a blend: Whitted rays
+    /// either hit or pass.
+    double alpha = 1;
+    double alphaCutoff = 0.5;
+
+    /// The cut-off in force: `override` (--alpha-cutoff) when set, else alphaCutoff.
+    double cutoff(const std::optional<double>& override = std::nullopt) const {
+        return override.value_or(alphaCutoff);
+    }
+    /// Whether some hit on this material may be a hole (renderer/surface_filter).
+    bool cutsOut(const std::optional<double>& override = std::nullopt) const {
+        return maps.alpha != MaterialMaps::kNone || alpha < cutoff(override);
+    }
 };
 
 }  // namespace raylab

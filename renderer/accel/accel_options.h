@@ -2,6 +2,8 @@
 // How an accelerator is built: the Embree build settings and the accuracy
 // knobs of the analytic intersectors, fixed for the accelerator's lifetime.
 
+#include <optional>
+
 #include "geometry/shape.h"
 #include "geometry/vec.h"
 
@@ -16,6 +18,9 @@ struct AccelOptions {
     Vec3 origin{0, 0, 0};
     /// Handed to every shape query (precision, polygon inside test).
     IntersectOptions intersect;
+    /// --alpha-cutoff (JSON render.alpha_cutoff): the cut-off of every
+    /// material's alpha (renderer/surface_filter.h); unset, each material's own.
+    std::optional<double> alphaCutoff;
 };
 
 /// "low", "medium" or "high": the spelling of --bvh-quality and the JSON key.

@@ -41,7 +41,8 @@ auto namingObject(const Object& object, F&& f) {
 
 EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& options,
                                      const std::string& deviceConfig)
-    : m_device(deviceConfig), m_origin(options.origin), m_filter(scene), m_scene(m_device) {
+    : m_device(deviceConfig), m_origin(options.origin), m_filter(scene, options),
+      m_scene(m_device) {
     m_device.check("rtcNewScene");
     if (!isFinite(m_origin))
         throw std::invalid_argument("embree: accelerator origin must be finite");
@@ -216,11 +217,14 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
                                  OcclusionHint& hint) const {
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
-    if (hint.primitive != OcclusionHint::kNone) {
+    if (hint.primitive < m_user.entries.size()) {
         // Only unfiltered entries are named (occludedCallback): their exact
-        // test is the whole answer the callback would give.
+        // test is the whole answer the callback would give. A filtered entry
+        // (a cut-out or a transmitter) would bypass its filter here, so a
+        // hint naming one is ignored: the walk below asks the filter.
         const EmbreeUserTable::Entry& e = m_user.entries[hint.primitive];
-        if (e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options)) return true;
+        if (!e.filtered && e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options))
+            return true;
     }
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);

@@ -18,7 +18,7 @@ bool traceable(const Ray& ray, double tMin, double tMax) {
 }  // namespace
 
 NaiveAccelerator::NaiveAccelerator(const Scene& scene, const AccelOptions& options)
-    : m_options(options.intersect), m_filter(scene) {
+    : m_options(options.intersect), m_filter(scene, options) {
     const auto start = std::chrono::steady_clock::now();
     validateShapes(scene, "naive");
     m_shapes.reserve(scene.objects.size());

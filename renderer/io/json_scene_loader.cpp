@@ -111,7 +111,7 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     const JsonFields f(*this, v, path, "the render settings",
                        {"adaptive", "adaptive_levels", "min_weight", "seed", "max_rays", "precision",
                         "epsilon", "bvh_quality", "robust", "accel", "shadows", "texture_filter",
-                        "texture_footprint"});
+                        "texture_footprint", "alpha_cutoff"});
     RenderOverrides& r = m_scene.settings;
     if (const JsonValue* x = f.get("adaptive"))
         r.adaptiveThreshold = nonNegative(*x, f.path("adaptive"));
@@ -132,6 +132,12 @@ void SceneReader::readRenderSettings(const JsonValue& v, const std::string& path
     if (const JsonValue* x = f.get("epsilon")) r.epsilon = nonNegative(*x, f.path("epsilon"));
     if (const JsonValue* x = f.get("shadows"))
         r.shadows = choice(*x, f.path("shadows"), shadowModeNames());
+    if (const JsonValue* x = f.get("alpha_cutoff")) {
+        r.alphaCutoff = nonNegative(*x, f.path("alpha_cutoff"));
+        if (*r.alphaCutoff > 1)
+            fail(*x, f.path("alpha_cutoff"),
+                 "must be in [0, 1] (got " + formatJsonNumber(*r.alphaCutoff) + ")");
+    }
     if (const JsonValue* x = f.get("bvh_quality"))
         r.bvhQuality = choice(*x, f.path("bvh_quality"), bvhQualityNames());
     if (const JsonValue* x = f.get("robust")) r.robust = boolean(*x, f.path("robust"));
@@ -246,7 +252,7 @@ void SceneReader::readMaterials(const JsonValue& v, const std::string& path) {
 Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) {
     const JsonFields f(*this, v, path, "a material",
                        {"ka", "kd", "ks", "shininess", "highlight", "km", "kt", "ior", "bump",
-                        "normal_map"});
+                        "normal_map", "alpha", "alpha_cutoff"});
     Material m;
     // A colour is a value or a texture ({"texture": ...} or {"checker": ...}),
     // which then stands for the whole colour (its constant is 1).
@@ -287,6 +293,25 @@ Material SceneReader::readMaterial(const JsonValue& v, const std::string& path) 
                                               m_scene.textures);
         if (t.present) m.maps.normal = t.index;
     }
+    // Cut-outs: "alpha" is a coverage in [0, 1] or a mask texture; where it
+    // is below "alpha_cutoff" the surface is a hole.
+    const auto unit = [&](const char* key) {
+        const JsonValue& x = *f.get(key);
+        const double a = number(x, f.path(key));
+        if (!(a >= 0 && a <= 1))
+            fail(x, f.path(key), "must be in [0, 1] (got " + formatJsonNumber(a) + ")");
+        return a;
+    };
+    if (const JsonValue* x = f.get("alpha")) {
+        if (x->isObject()) {
+            const JsonTexture t = readJsonTexture(*this, *x, f.path("alpha"), JsonTextureUse::Alpha,
+                                                  m_textureFiles, m_scene.textures);
+            if (t.present) m.maps.alpha = t.index;
+        } else {
+            m.alpha = unit("alpha");
+        }
+    }
+    if (f.get("alpha_cutoff")) m.alphaCutoff = unit("alpha_cutoff");
     return m;
 }
 

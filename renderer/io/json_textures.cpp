@@ -21,7 +21,8 @@ Vec2 pair(const JsonFieldReader& reader, const JsonValue& v, const std::string& 
 JsonTexture readJsonTexture(const JsonFieldReader& reader, const JsonValue& v,
                             const std::string& path, JsonTextureUse use,
                             TextureLibrary& library, std::vector<Texture>& textures) {
-    const bool checker = use == JsonTextureUse::Colour && v.isObject() && v.find("checker");
+    const bool checker = (use == JsonTextureUse::Colour || use == JsonTextureUse::Alpha) &&
+                         v.isObject() && v.find("checker");
     std::vector<std::string> keys = {"scale", "offset"};
     if (checker) {
         keys.push_back("checker");
@@ -33,6 +34,7 @@ JsonTexture readJsonTexture(const JsonFieldReader& reader, const JsonValue& v,
                        checker ? "a checker texture"
                                : use == JsonTextureUse::Bump ? "a bump map"
                                : use == JsonTextureUse::NormalMap ? "a normal map"
+                               : use == JsonTextureUse::Alpha     ? "an alpha mask"
                                                                   : "a texture",
                        keys);
     JsonTexture out;
@@ -77,6 +79,7 @@ JsonTexture readJsonTexture(const JsonFieldReader& reader, const JsonValue& v,
         tex = Texture::fromImage(image.image, file);
         tex.wrap = wrap;
     }
+    if (use == JsonTextureUse::Alpha) tex.channel = TextureChannel::Matte;
     tex.scale = scale;
     tex.offset = offset;
     textures.push_back(tex);

@@ -6,7 +6,9 @@
 //   or a procedural checkerboard in uv
 //     {"checker": [colour, colour], "scale": [su, sv], "offset": [ou, ov]};
 //   "bump": an image texture plus "height" (scene units per unit of the map),
-//   "normal_map": an image texture (tangent-space normals).
+//   "normal_map": an image texture (tangent-space normals),
+//   "alpha": an image texture (its alpha channel, or its grey level when it
+//     has none) or a checker (the luminance of its colours): a cut-out mask.
 // The texture's file is relative to the scene file. A file that cannot be
 // read is one warning ("FILE:LINE: PATH: texture 'x.png' not read (why);
 // rendered without it") unless "required": true makes it an error.
@@ -27,6 +29,7 @@ enum class JsonTextureUse {
     Colour,     ///< a material colour: image (sRGB-decoded) or checker
     Bump,       ///< "bump": an image read as data, with "height"
     NormalMap,  ///< "normal_map": an image read as data
+    Alpha,      ///< "alpha": an image read as data (its alpha channel, else its grey), or a checker
 };
 
 struct JsonTexture {

@@ -80,11 +80,11 @@ Material materialFromMtl(const MtlMaterial& m, LoadWarnings& warn) {
     }
     if (m.ke.given() && !m.ke.value.isBlack())
         note(m.ke.line, "'Ke' (emission) is not simulated by raylab; ignored");
-    // Colour, exponent, bump and normal maps are read by mtl_textures.cpp.
+    // Colour, exponent, bump, normal and alpha maps are read by mtl_textures.cpp.
     for (const MtlTexture& t : m.textures)
         if (!isSupportedMtlMap(t.keyword))
             warn.add("material '" + m.name + "': texture maps other than map_Kd, map_Ka, map_Ks, "
-                         "map_Ns, bump and norm are not supported and are ignored (" +
+                         "map_Ns, bump, norm and map_d are not supported and are ignored (" +
                          t.keyword + " " + t.file + ")",
                      t.line, m.file, "texture maps");
     return out;

@@ -33,7 +33,7 @@ bool takeNumbers(std::vector<std::string>& words, size_t& i, size_t least, size_
     return out.size() >= least;
 }
 
-enum class MapKind { Colour, Scalar, Bump, Normal };
+enum class MapKind { Colour, Scalar, Bump, Normal, Alpha };
 
 struct MapSpec {
     const char* keyword;
@@ -50,6 +50,7 @@ const MapSpec* mapSpec(const std::string& keyword) {
         {"bump", MapKind::Bump, &MaterialMaps::bump},
         {"map_bump", MapKind::Bump, &MaterialMaps::bump},
         {"norm", MapKind::Normal, &MaterialMaps::normal},
+        {"map_d", MapKind::Alpha, &MaterialMaps::alpha},
     };
     const std::string k = lower(keyword);
     for (const MapSpec& m : kMaps)
@@ -163,6 +164,9 @@ void applyMtlTextures(const MtlMaterial& statements, Material& material,
         tex.wrap = o.clamp ? WrapMode::Clamp : WrapMode::Repeat;
         if (spec->kind == MapKind::Bump || spec->kind == MapKind::Scalar)
             tex.channel = channelOf(o.channel ? o.channel : 'l');
+        // map_d: exporters name an RGBA image (often the map_Kd one) meaning
+        // its alpha; a grey mask has none, and then its grey level counts.
+        if (spec->kind == MapKind::Alpha) tex.channel = channelOf(o.channel ? o.channel : 'm');
         textures.push_back(tex);
         material.maps.*(spec->slot) = uint32_t(textures.size() - 1);
         if (spec->kind == MapKind::Bump) material.maps.bumpScale = o.bumpMultiplier;

@@ -560,9 +560,7 @@ void appendObjModel(Scene& scene, const ObjModel& model, const std::string& base
             scene.materials.push_back(m);
             Material& added = scene.materials.back();
             added.name = baseName + "/" + m.name;
-            for (uint32_t* map : {&added.maps.ka, &added.maps.kd, &added.maps.ks, &added.maps.km,
-                                  &added.maps.kt, &added.maps.shininess, &added.maps.bump,
-                                  &added.maps.normal})
+            for (uint32_t* map : added.maps.slots())
                 if (*map != MaterialMaps::kNone) *map += firstTexture;
         }
     }

@@ -115,7 +115,7 @@ TEST_CASE("cli: the same render is byte-identical for 1 and 2 threads and across
     CHECK(cli::readFile(dir.file("2.exr")) == first);
 }
 
-TEST_CASE("cli: compare reports identical and differing renders; --polygons triangles") {
+TEST_CASE("cli: compare reports identical and differing renders, --polygons triangles") {
     cli::TempDir dir;
     const std::string scene = dir.write("poly.json", R"({
   "image": {"width": 24, "height": 16},
@@ -140,7 +140,7 @@ TEST_CASE("cli: compare reports identical and differing renders; --polygons tria
     CHECK(cli::run("compare " + a + " " + dir.file("missing.exr")).exitCode == 1);
 }
 
-TEST_CASE("cli: camera overrides set the camera of any scene; --up and --normals frame a bare OBJ") {
+TEST_CASE("cli: camera overrides set the camera of any scene, --up and --normals frame a bare OBJ") {
     cli::TempDir dir;
     const std::string scene = dir.write("tiny.json", kTinyScene);
     // The flags give the same picture as a scene whose camera says the same.

@@ -163,7 +163,7 @@ TEST_CASE("command line: did you mean, for flags, commands and benchmarks") {
     CHECK(bench.err == "raylab: error: bench: unknown benchmark 'acel' (did you mean 'accel'?)\n");
 }
 
-TEST_CASE("command line: raylab help CMD is raylab CMD --help; --version is listed") {
+TEST_CASE("command line: raylab help CMD is raylab CMD --help, --version is listed") {
     const cli::Result main = cli::run("help");
     CHECK(main.exitCode == 0);
     CHECK(main.out.find("--version") != std::string::npos);

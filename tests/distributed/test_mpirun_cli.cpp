@@ -313,7 +313,7 @@ TEST_CASE("mpirun cli: a mesh that differs between ranks is caught" * kWithMpiru
     CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
 }
 
-TEST_CASE("mpirun cli: ranks with other image settings stop; other thread counts agree" *
+TEST_CASE("mpirun cli: ranks with other image settings stop, other thread counts agree" *
           kWithMpirun) {
     const test::TempDir dir;
     const std::string render = "render " + demo() + " --height 32 --quiet -o " + dir.file("x.exr");

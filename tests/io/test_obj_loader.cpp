@@ -43,7 +43,7 @@ const char* kCube =
 
 }  // namespace
 
-TEST_CASE("obj: quads are triangulated; flat faces share positions") {
+TEST_CASE("obj: quads are triangulated, flat faces share positions") {
     TempDir dir;
     // The cube without normals: 8 shared vertices, 12 triangles.
     const std::string path =

@@ -128,7 +128,7 @@ TEST_CASE("spd render: the same scene in SPD mode: 25 corner rays, 5 hits, 1 sha
     }
 }
 
-TEST_CASE("spd render: SPD eye rays = (W+1)(H+1); --spd means 512x512, depth 5") {
+TEST_CASE("spd render: SPD eye rays = (W+1)(H+1), --spd means 512x512, depth 5") {
     const Scene scene = loadNffScene(sphereScene(kMatte), "tiny.nff");
     RenderOverrides o;
     o.spd = true;

@@ -7,10 +7,13 @@
 #include <atomic>
 #include <cmath>
 #include <set>
+#include <tuple>
 #include <string>
 
 #include "cli/cli_helpers.h"
+#include "io/io_test_helpers.h"
 #include "numerics/numerics_helpers.h"
+#include "renderer/io/scene_loader.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json.h"
 #include "tools/accuracy/accuracy_report.h"
@@ -106,9 +109,11 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
     CHECK(referenceAccuracySetting(64).flags() ==
           "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered "
           "--texture-filter point --texture-footprint differentials");
-    for (const auto& [quick, textured] : {std::pair{false, false}, std::pair{true, false},
-                                          std::pair{false, true}}) {
-        const auto settings = accuracySweepSettings(quick, textured);
+    for (const auto& [quick, textured, cutOuts] :
+         {std::tuple{false, false, false}, std::tuple{true, false, false},
+          std::tuple{false, true, false}, std::tuple{false, false, true},
+          std::tuple{true, false, true}}) {
+        const auto settings = accuracySweepSettings(quick, textured, cutOuts);
         const auto knobs = accuracyKnobNames();
         std::set<std::string> names;
         for (const AccuracySetting& s : settings) {
@@ -129,7 +134,10 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
             if (s.textures.filter != d.textures.filter ||
                 s.textures.footprint != d.textures.footprint)
                 diff.insert("texture");
+            if (s.alphaCutoff != d.alphaCutoff) diff.insert("alpha-cutoff");
+            CHECK(s.coverageCutoffs == 0);  // only the reference averages cut-offs
             CHECK((s.knob == "texture") <= textured);
+            CHECK((s.knob == "alpha-cutoff") <= cutOuts);
             if (s.knob == "default")
                 CHECK(diff.empty());
             else if (s.knob == "combo")
@@ -146,6 +154,9 @@ TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
         const auto textureRows = std::count_if(settings.begin(), settings.end(),
                                                [](const AccuracySetting& s) { return s.knob == "texture"; });
         CHECK(textureRows == (textured ? 5 : 0));
+        const auto cutoffRows = std::count_if(settings.begin(), settings.end(),
+                                              [](const AccuracySetting& s) { return s.knob == "alpha-cutoff"; });
+        CHECK(cutoffRows == (cutOuts ? (quick ? 2 : 5) : 0));
     }
 }
 
@@ -265,4 +276,39 @@ TEST_CASE("accuracy: the command line") {
     // Quick depth settings: 1 and 3, plus the default, the reference and the header.
     CHECK(cli::lineCount(cli::readFile(dir.file("r.csv"))) == 5);
     CHECK(cli::readFile(dir.file("p.svg")).rfind("<svg", 0) == 0);
+}
+
+TEST_CASE("accuracy: with cut-outs the reference reads alpha as coverage (the mean over cut-offs)") {
+    // A white card of uniform alpha 0.3 fills the view, lit by ambient 1 only,
+    // over a black background. Of the 16 cut-offs (k + 0.5)/16 five are <= 0.3
+    // (0.03125 ... 0.28125), so the reference is 5/16 white everywhere; a
+    // cut-off of 0.25 keeps the card (error 11/16 in every channel), 0.5
+    // makes it a hole (error 5/16).
+    test::TempDir dir;
+    Scene scene = loadScene(dir.write("card.json", R"({
+        "camera": {"type": "orthographic", "eye": [0, 0, 5], "direction": [0, 0, -1], "width": 2},
+        "ambient": [1, 1, 1],
+        "materials": {"card": {"ka": [1, 1, 1], "kd": 0, "alpha": 0.3}},
+        "objects": [{"type": "polygon", "material": "card",
+                     "vertices": [[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]]}]})"));
+    REQUIRE(hasCutOuts(scene));
+    AccuracySweepOptions o;
+    o.width = 8;
+    o.height = 6;
+    o.runs = 1;
+    o.referenceSpp = 2;
+    for (const AccuracySetting& s : accuracySweepSettings(true, false, true))
+        if (s.knob == "alpha-cutoff") o.settings.push_back(s);
+    REQUIRE(o.settings.size() == 2);
+    REQUIRE(*o.settings[0].alphaCutoff == 0.25);
+    REQUIRE(*o.settings[1].alphaCutoff == 0.75);
+    const AccuracyReport rep = runAccuracySweep(scene, "card", o);
+    REQUIRE(rep.results.size() == 2);
+    CHECK(rep.reference.setting.coverageCutoffs == kCoverageCutoffs);
+    CHECK(rep.results[0].rmse == doctest::Approx(11.0 / 16).epsilon(1e-6));
+    CHECK(rep.results[1].rmse == doctest::Approx(5.0 / 16).epsilon(1e-6));
+    CHECK(rep.results[0].setting.flags().find("--alpha-cutoff 0.25") != std::string::npos);
+    // A scene without cut-outs keeps the one-render reference.
+    Scene plain = tinyScene();
+    CHECK_FALSE(hasCutOuts(plain));
 }

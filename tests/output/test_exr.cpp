@@ -123,7 +123,7 @@ TEST_CASE("exr: exact channel list, types, compression and header attributes") {
     CHECK(h.typedAttribute<Imf::StringAttribute>("raylab/accel").value() == "embree");
 }
 
-TEST_CASE("exr: --float-pixels switches only RGBA to FLOAT; empty scene/accel are omitted") {
+TEST_CASE("exr: --float-pixels switches only RGBA to FLOAT, empty scene/accel are omitted") {
     TempDir dir;
     const std::string path = dir.file("img.exr");
     ExrOptions o = makeOptions(true);
@@ -252,7 +252,7 @@ TEST_CASE("exr: reader fills missing channels (A = 1, absent layers empty)") {
     CHECK(f.objectId.empty());
 }
 
-TEST_CASE("exr: errors are InputErrors naming the file; nothing is left behind") {
+TEST_CASE("exr: errors are InputErrors naming the file, nothing is left behind") {
     TempDir dir;
     const std::string missing = dir.file("missing.exr");
     try {

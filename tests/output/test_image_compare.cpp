@@ -54,7 +54,7 @@ TEST_CASE("image compare: one channel off by 0.5") {
     CHECK(compareImages(a, b, 0.4999).pixelsOverThreshold == 1);
 }
 
-TEST_CASE("image compare: alpha counts for bit identity only; -0 equals +0 numerically") {
+TEST_CASE("image compare: alpha counts for bit identity only, -0 equals +0 numerically") {
     Film a = twoPixels(0.f, 0.f, 0.f, 1.f, 1.f, 1.f);
     Film b = a;
     b.rgba[3] = 0.5f;  // alpha of pixel 0 differs

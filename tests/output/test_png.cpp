@@ -116,7 +116,7 @@ TEST_CASE("png: file has the PNG signature, IHDR size and the tone-mapped pixels
     CHECK(px == expected);
 }
 
-TEST_CASE("png: exposure is applied in the file; errors are InputErrors") {
+TEST_CASE("png: exposure is applied in the file, errors are InputErrors") {
     TempDir dir;
     Film film(1, 1);
     film.rgba = {0.25f, 0.5f, 1.f, 1.f};

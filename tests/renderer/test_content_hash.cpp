@@ -16,7 +16,7 @@ TEST_CASE("contentHash: the published FNV-1a 64 values") {
     CHECK(contentHash("foobar") == 0x85944171f73967e8ull);
 }
 
-TEST_CASE("ContentHash: pieces hash like the whole; numbers as 8 little-endian bytes") {
+TEST_CASE("ContentHash: pieces hash like the whole, numbers as 8 little-endian bytes") {
     CHECK(ContentHash().add("foo").add("bar").value() == contentHash("foobar"));
     const std::string le("\x08\x07\x06\x05\x04\x03\x02\x01", 8);
     CHECK(ContentHash().addNumber(0x0102030405060708ull).value() == contentHash(le));

@@ -112,7 +112,7 @@ TEST_CASE("commit: a signal during the renames undoes them: exit 143, old output
     p.checkIntact();
 }
 
-TEST_CASE("commit: an existing output keeps its mode; a new one gets the umask's") {
+TEST_CASE("commit: an existing output keeps its mode, a new one gets the umask's") {
     Previous p;
     REQUIRE(::chmod(p.exr.c_str(), 0600) == 0);
     REQUIRE(::chmod(p.png.c_str(), 0640) == 0);

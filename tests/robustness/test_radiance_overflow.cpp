@@ -148,7 +148,7 @@ TEST_CASE("overflow, JSON: ambient, mirror and filtered-shadow products saturate
     CHECK(contains(stats, "\"non_finite_samples\": 0"));
 }
 
-TEST_CASE("overflow, NFF: colour x Kd refused at its line; lights of 1.7e308 never black") {
+TEST_CASE("overflow, NFF: colour x Kd refused at its line, lights of 1.7e308 never black") {
     TempDir dir;
     const std::string view =
         "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 30\nhither 0.01\nresolution 16 16\n";
@@ -173,7 +173,7 @@ TEST_CASE("overflow, NFF: colour x Kd refused at its line; lights of 1.7e308 nev
     CHECK(lost == 0);
 }
 
-TEST_CASE("overflow, OBJ/MTL: values beyond float range refused at their line; kd x light saturates") {
+TEST_CASE("overflow, OBJ/MTL: values beyond float range refused at their line, kd x light saturates") {
     TempDir dir;
     const std::string quad = "mtllib m.mtl\nusemtl hot\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
     dir.write("q.obj", quad);

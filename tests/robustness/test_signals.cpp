@@ -223,7 +223,7 @@ TEST_CASE("signals: SIGINT, SIGTERM and SIGHUP in every phase: 128+signal, old o
     }
 }
 
-TEST_CASE("signals: stopped in the commit phase, every temporary exists; the signal removes them") {
+TEST_CASE("signals: stopped in the commit phase, every temporary exists, the signal removes them") {
     TempDir dir;
     const std::string scene = dir.write("scene.json", kSmallScene);
     Process p({"render", scene, "-o", dir.file("out.exr"), "--png", dir.file("out.png"), "--width",

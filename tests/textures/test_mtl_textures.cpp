@@ -42,7 +42,7 @@ TEST_CASE("mtl maps: colour, exponent, bump and normal maps with their options")
               "map_Ns -imfchan r a.png\n"
               "bump -bm 0.25 a.png\n"
               "norm a.png\n"
-              "map_d a.png\n"
+              "map_Tr a.png\n"
               "map_Ka -bm 2 a.png\n");
     ObjLoadOptions o;
     o.printWarnings = false;
@@ -79,7 +79,7 @@ TEST_CASE("mtl maps: colour, exponent, bump and normal maps with their options")
         CHECK(mesh.uvs[i] == Vec2(mesh.positions[i].x, mesh.positions[i].y));
 }
 
-TEST_CASE("mtl maps: a missing file is one warning at its MTL line; the material stays untextured") {
+TEST_CASE("mtl maps: a missing file is one warning at its MTL line, the material stays untextured") {
     test::TempDir dir;
     dir.write("q.obj", kQuad);
     dir.write("m.mtl", "newmtl tex\nKd 1 0 0\nmap_Kd nothere.png\nmap_Ka nothere.png\n");

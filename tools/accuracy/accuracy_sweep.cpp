@@ -86,6 +86,7 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     ov.shadows = s.shadows;
     ov.textureFilter = s.textures.filter;
     ov.textureFootprint = s.textures.footprint;
+    ov.alphaCutoff = s.alphaCutoff;
     const RenderOptions options = resolveRenderOptions(scene, ov);
 
     Rendered out;
@@ -103,6 +104,33 @@ Rendered renderSetting(Scene& scene, const AccuracySetting& s, const AccuracySwe
     out.rays = r.rays.total();
     out.nonFiniteSamples = r.nonFiniteSamples;
     out.film = std::move(r.film);
+    return out;
+}
+
+/// renderSetting, or for a coverage reference the mean of its renders over
+/// the cut-offs (times and rays summed: what the reference cost).
+Rendered renderReference(Scene& scene, const AccuracySetting& s, const AccuracySweepOptions& o,
+                         const std::atomic<bool>* cancel) {
+    if (s.coverageCutoffs <= 0) return renderSetting(scene, s, o, cancel);
+    Rendered out;
+    std::vector<double> sum;
+    for (int k = 0; k < s.coverageCutoffs; ++k) {
+        AccuracySetting at = s;
+        at.alphaCutoff = (k + 0.5) / s.coverageCutoffs;
+        Rendered r = renderSetting(scene, at, o, cancel);
+        if (r.cancelled) return r;
+        if (k == 0) sum.assign(r.film.rgba.size(), 0.0);
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += r.film.rgba[i];
+        out.buildSeconds += r.buildSeconds;
+        out.renderSeconds += r.renderSeconds;
+        out.buildCpuSeconds += r.buildCpuSeconds;
+        out.renderCpuSeconds += r.renderCpuSeconds;
+        out.rays += r.rays;
+        out.nonFiniteSamples += r.nonFiniteSamples;
+        if (k == 0) out.film = std::move(r.film);
+    }
+    for (size_t i = 0; i < sum.size(); ++i)
+        out.film.rgba[i] = float(sum[i] / s.coverageCutoffs);
     return out;
 }
 
@@ -125,6 +153,12 @@ bool hasTextures(const Scene& scene) {
     return false;
 }
 
+bool hasCutOuts(const Scene& scene) {
+    for (const Material& m : scene.materials)
+        if (m.cutsOut()) return true;
+    return false;
+}
+
 std::string AccuracySetting::flags() const {
     std::string f;
     if (adaptiveThreshold > 0)
@@ -143,6 +177,9 @@ std::string AccuracySetting::flags() const {
     if (textures.filter != defaults.filter || textures.footprint != defaults.footprint)
         f += std::string(" --texture-filter ") + textureFilterName(textures.filter) +
              " --texture-footprint " + textureFootprintName(textures.footprint);
+    if (alphaCutoff) f += " --alpha-cutoff " + shortNumber(*alphaCutoff);
+    if (coverageCutoffs > 0)
+        f += " (mean over --alpha-cutoff (k+0.5)/" + std::to_string(coverageCutoffs) + ")";
     return f;
 }
 
@@ -159,10 +196,10 @@ AccuracySetting referenceAccuracySetting(int spp) {
 
 std::vector<std::string> accuracyKnobNames() {
     return {"default",   "spp",    "adaptive", "depth",   "min-weight", "precision",
-            "offset",    "bvh",    "shadows",  "texture", "combo"};
+            "offset",    "bvh",    "shadows",  "texture", "alpha-cutoff", "combo"};
 }
 
-std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured) {
+std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured, bool cutOuts) {
     const AccuracySetting d = defaultAccuracySetting();
     std::vector<AccuracySetting> v{d};
     const auto add = [&](const char* knob, const std::string& name, auto&& change) {
@@ -238,6 +275,16 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured) {
             }
     }
 
+    if (cutOuts) {
+        // One cut-off for every material: where a soft-edged mask's alpha
+        // ramps, the cut-off moves the silhouette (the reference blends).
+        const std::vector<double> cutoffs = quick ? std::vector<double>{0.25, 0.75}
+                                                  : std::vector<double>{0.1, 0.25, 0.5, 0.75, 0.9};
+        for (double c : cutoffs)
+            add("alpha-cutoff", "alpha cut-off " + shortNumber(c),
+                [c](AccuracySetting& s) { s.alphaCutoff = c; });
+    }
+
     add("combo", "preview: depth 2, float, bvh low", [](AccuracySetting& s) {
         s.maxDepth = 2;
         s.precision = Precision::Float;
@@ -310,7 +357,9 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     if (options.referenceSpp < 1)
         throw std::invalid_argument("accuracy: reference spp must be >= 1");
     const std::vector<AccuracySetting> settings =
-        options.settings.empty() ? accuracySweepSettings(false, hasTextures(scene)) : options.settings;
+        options.settings.empty()
+            ? accuracySweepSettings(false, hasTextures(scene), hasCutOuts(scene))
+            : options.settings;
 
     AccuracyReport report;
     report.scene = scenePath;
@@ -321,7 +370,13 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     report.visibleLevels = options.visibleLevels;
     report.machine = cpuModelName() + ", " + std::to_string(logicalCores()) + " logical cores";
 
-    const AccuracySetting ref = referenceAccuracySetting(options.referenceSpp);
+    AccuracySetting ref = referenceAccuracySetting(options.referenceSpp);
+    if (hasCutOuts(scene)) {
+        // Alpha as partial coverage (AccuracySetting::coverageCutoffs).
+        ref.coverageCutoffs = kCoverageCutoffs;
+        ref.name = "reference (" + std::to_string(options.referenceSpp) + " spp, coverage of " +
+                   std::to_string(kCoverageCutoffs) + " cut-offs)";
+    }
     // One reference-quality render per distinct sampling (the reference's own
     // sampling reuses the reference).
     std::map<std::string, AccuracySetting> matched;
@@ -356,7 +411,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     };
 
     step(ref.name);
-    const Rendered reference = renderSetting(scene, ref, options, cancel);
+    const Rendered reference = renderReference(scene, ref, options, cancel);
     report.cancelled = reference.cancelled;
     if (report.cancelled) return finish();
     report.reference.setting = ref;
@@ -374,7 +429,7 @@ AccuracyReport runAccuracySweep(Scene& scene, const std::string& scenePath,
     std::map<std::string, Film> matchedFilms;
     for (const auto& [key, m] : matched) {
         step("reference quality at " + key);
-        Rendered r = renderSetting(scene, m, options, cancel);
+        Rendered r = renderReference(scene, m, options, cancel);
         report.cancelled = r.cancelled;
         if (report.cancelled) return finish();
         matchedFilms.emplace(key, std::move(r.film));

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,8 @@ namespace raylab {
 struct AccuracySetting {
     std::string name;  ///< row label, e.g. "spp 4"
     std::string knob;  ///< group: reference, default, spp, adaptive, depth, min-weight,
-                       ///< precision, offset, bvh, shadows, combo
+                       ///< precision, offset, bvh, shadows, texture, alpha-cutoff,
+                       ///< combo
     int spp = 1;
     double adaptiveThreshold = 0;  ///< 0 = off (stratified spp)
     int adaptiveLevels = 2;
@@ -41,6 +43,15 @@ struct AccuracySetting {
     bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST
     ShadowMode shadows = ShadowMode::Filtered;  ///< feelers through transmitters (or blocked)
     TextureOptions textures;  ///< texture filter and footprint (textured scenes)
+    /// --alpha-cutoff for every material (scenes with cut-outs); unset: each
+    /// material's own alpha_cutoff.
+    std::optional<double> alphaCutoff;
+    /// The reference of a scene with cut-outs: the mean of this many renders
+    /// at cut-offs (k + 0.5) / n, k = 0..n-1, spread evenly over (0, 1). A
+    /// hit is kept where alpha >= the cut-off, so for one mask layer the mean
+    /// keeps a fraction alpha of it: alpha as partial coverage, the image of
+    /// a renderer that blends by alpha. 0: one render.
+    int coverageCutoffs = 0;
 
     /// The equivalent `raylab render` flags ("--spp 4 --depth 5 ...", every knob).
     std::string flags() const;
@@ -58,7 +69,16 @@ AccuracySetting referenceAccuracySetting(int spp);
 /// \brief The settings swept: the default, each knob varied alone from the
 ///   default, and a few combinations. `quick` keeps a handful (smoke runs).
 ///   `textured` adds the "texture" group: every texture filter and footprint.
-std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured = false);
+///   `cutOuts` adds the "alpha-cutoff" group: --alpha-cutoff 0.1 ... 0.9.
+std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured = false,
+                                                   bool cutOuts = false);
+
+/// Whether some material of the scene may cut out (the sweep then has an
+/// "alpha-cutoff" group and a coverage reference).
+bool hasCutOuts(const Scene& scene);
+
+/// Cut-offs the coverage reference averages over (AccuracySetting::coverageCutoffs).
+constexpr int kCoverageCutoffs = 16;
 
 /// Whether some material of the scene has a texture (the sweep then has a
 /// "texture" group).
