@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/memory_limit.h"
+
 namespace raylab {
 
 namespace {
@@ -36,20 +38,6 @@ std::string executableFolder() {
     std::string path(buffer, size_t(n));
     const size_t slash = path.rfind('/');
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
-std::string describeMiB(double bytes) {
-    return std::to_string(int64_t(bytes / (1 << 20))) + " MiB";
-}
-
-/// This process's address space in use (/proc/self/statm).
-double addressSpaceInUse() {
-    std::FILE* f = std::fopen("/proc/self/statm", "r");
-    if (!f) return 0;
-    double pages = 0;
-    if (std::fscanf(f, "%lf", &pages) != 1) pages = 0;
-    std::fclose(f);
-    return pages * double(::sysconf(_SC_PAGESIZE));
 }
 
 /// Runs the probe (image_module_probe.cpp) on `module` and `image`; the
@@ -103,14 +91,14 @@ std::optional<std::string> addressSpaceRefusal(const std::string& module,
     struct rlimit as {};
     if (::getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY) return std::nullopt;
     const double limit = double(as.rlim_cur);
-    const std::string where = "the address-space limit (ulimit -v) of " + describeMiB(limit);
+    const std::string where = "the address-space limit (ulimit -v) of " + describeBytes(limit);
     const std::string probe = module.substr(0, module.rfind('/') + 1) + kProbeName;
     const std::optional<double> cost = probeModuleCost(probe, module, image);
     if (!cost) return "it does not load within " + where;
-    const double inUse = addressSpaceInUse();
+    const double inUse = readMemoryFacts().virtualSizeBytes;
     if (inUse + *cost + kProbeMargin > limit)
-        return "it needs about " + describeMiB(*cost) + " of address space, and " + where +
-               " leaves " + describeMiB(std::max(0.0, limit - inUse));
+        return "it needs about " + describeBytes(*cost) + " of address space, and " + where +
+               " leaves " + describeBytes(std::max(0.0, limit - inUse));
     return std::nullopt;
 }
 
