@@ -40,7 +40,7 @@ const char* const kAccuracyHelp =
     "  min-weight  Hall-Greenberg pruning 0.01, 0.05, 0.1, 0.3 at depth 12\n"
     "  precision   float instead of double analytic intersectors\n"
     "  offset      fixed epsilon 1e-2, 1e-4, 1e-6 instead of the robust offset\n"
-    "  bvh         Embree build quality low, high; robust traversal\n"
+    "  bvh         Embree build quality low, high; fast traversal (--no-robust)\n"
     "  shadows     opaque shadow feelers (the classic Whitted shadow) instead of filtered\n"
     "  texture     (scenes with textures) every --texture-filter with every --texture-footprint\n"
     "  alpha-cutoff  (scenes with cut-outs) --alpha-cutoff 0.1, 0.25, 0.5, 0.75, 0.9; the reference\n"

@@ -133,7 +133,9 @@ const char* const kRenderHelp =
     "  --threads N              worker threads (default: all cores); the image does not depend on it\n"
     "  --accel embree|naive     Embree BVH (default) or the textbook loop over all objects\n"
     "  --bvh-quality low|medium|high   Embree build quality (default medium)\n"
-    "  --robust                 Embree's robust traversal (watertight triangle edges)\n"
+    "  --robust, --no-robust    Embree's robust traversal, watertight on triangle edges (default),\n"
+    "                           or its fast one, which lets 5-15% of rays aimed exactly at an edge\n"
+    "                           through (JSON render.robust)\n"
     "  --precision float|double arithmetic of the analytic intersectors (default double)\n"
     "  --shadows opaque|filtered  shadow feelers through transmitters: filtered (default) dims the\n"
     "                           light by the kt of every transmitter crossed (no refraction of the\n"
@@ -182,6 +184,7 @@ const CommandFlags kRenderFlags{
      {"--look-at", "", true},       {"--camera-up", "", true},   {"--fov", "", true},
      {"--up", "", true},            {"--normals", "", true},     {"--threads", "", true},
      {"--accel", "", true},         {"--bvh-quality", "", true}, {"--robust", "", false},
+     {"--no-robust", "", false},
      {"--precision", "", true},     {"--shadows", "", true},     {"--alpha-cutoff", "", true},
      {"--epsilon", "", true},
      {"--polygons", "", true},      {"--effects", "", true},     {"--texture-filter", "", true},
@@ -296,6 +299,7 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--accel") o.accel = p.choice(a, acceleratorNames());
         else if (a == "--bvh-quality") o.bvhQuality = p.choice(a, bvhQualityNames());
         else if (a == "--robust") o.robust = true;
+        else if (a == "--no-robust") o.robust = false;
         else if (a == "--shadows") o.shadows = p.choice(a, shadowModeNames());
         else if (a == "--alpha-cutoff") o.alphaCutoff = p.number(a, 0, 1);
         else if (a == "--precision") o.precision = p.choice(a, precisionNames());

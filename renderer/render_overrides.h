@@ -37,7 +37,7 @@ struct RenderOverrides {
     std::optional<TextureFilter> textureFilter;        ///< --texture-filter
     std::optional<TextureFootprint> textureFootprint;  ///< --texture-footprint
     bool spd = false;
-    bool robust = false;
+    std::optional<bool> robust;  ///< --robust / --no-robust, JSON render.robust
 };
 
 }  // namespace raylab

@@ -27,7 +27,7 @@ void apply(RenderOptions& r, const RenderOverrides& o) {
     if (o.maxRaysPerSample) r.maxRaysPerSample = *o.maxRaysPerSample;
     if (o.accel) r.accel = *o.accel;
     if (o.bvhQuality) r.accelOptions.quality = *o.bvhQuality;
-    if (o.robust) r.accelOptions.robust = true;
+    if (o.robust) r.accelOptions.robust = *o.robust;
     if (o.precision) r.accelOptions.intersect.precision = *o.precision;
     if (o.polygonTest) r.accelOptions.intersect.polygonTest = *o.polygonTest;
     if (o.shadows) r.shadows = *o.shadows;

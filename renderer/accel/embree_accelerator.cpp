@@ -60,6 +60,15 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& opt
 
     rtcCommitScene(m_scene.get());
     m_device.check("rtcCommitScene");
+
+    for (const Object& o : scene.objects) m_shapes.push_back(o.shape.get());
+    m_edgeHits.scene = m_scene.get();
+    m_edgeHits.origin = m_origin;
+    m_edgeHits.userGeomId = m_userGeomId;
+    m_edgeHits.triangleGeoms = &m_triangleGeoms;
+    m_edgeHits.shapes = &m_shapes;
+    m_edgeHits.filter = &m_filter;
+    m_edgeHits.options = options.intersect;
     m_buildSeconds = secondsSince(start);
 }
 
@@ -179,7 +188,12 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);
     rtcIntersect1(m_scene.get(), &ctx.rtc, &rayhit);
-    return decode(rayhit, ctx);
+    const auto hit = decode(rayhit, ctx);
+    // A triangle hit on (or within float error of) an edge goes to whichever
+    // triangle there the naive loop would choose (embree_edge_hits.h).
+    if (hit && rayhit.hit.geomID != m_userGeomId && nearTriangleEdge(rayhit.hit.u, rayhit.hit.v))
+        return resolveEdgeHit(m_edgeHits, ray, tMin, tMax, *hit);
+    return hit;
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {

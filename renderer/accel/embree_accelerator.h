@@ -19,6 +19,7 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/accel/embree_device.h"
+#include "renderer/accel/embree_edge_hits.h"
 #include "renderer/accel/embree_triangles.h"
 #include "renderer/accel/embree_user_geometry.h"
 #include "renderer/scene.h"
@@ -94,6 +95,8 @@ private:
     std::vector<std::unique_ptr<EmbreeTriangleGeometry>> m_triangleGeoms;
     EmbreeScene m_scene;
     unsigned m_userGeomId = RTC_INVALID_GEOMETRY_ID;
+    std::vector<const Shape*> m_shapes;  ///< Scene::objects' shapes, for edge hits
+    EdgeHitContext m_edgeHits;
     double m_buildSeconds = 0;
 };
 

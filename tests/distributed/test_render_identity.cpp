@@ -93,7 +93,7 @@ TEST_CASE("renderIdentity: every option that changes pixels is in the settings")
          [](RenderOptions& o) { o.textures.footprint = TextureFootprint::Cones; }},
         {"bvh_quality",
          [](RenderOptions& o) { o.accelOptions.quality = AccelOptions::BvhQuality::High; }},
-        {"robust", [](RenderOptions& o) { o.accelOptions.robust = true; }},
+        {"robust", [](RenderOptions& o) { o.accelOptions.robust = !o.accelOptions.robust; }},
         {"accel_origin", [](RenderOptions& o) { o.accelOptions.origin.y = 1e-300; }},
         {"precision",
          [](RenderOptions& o) { o.accelOptions.intersect.precision = Precision::Float; }},

@@ -43,7 +43,8 @@ struct Backend {
     bool robust = false;
 };
 
-/// Embree (default flags), Embree with RTC_SCENE_FLAG_ROBUST, and the naive loop.
+/// Embree with its fast traversal (--no-robust), Embree with RTC_SCENE_FLAG_ROBUST
+/// (the default), and the naive loop.
 inline std::vector<Backend> allBackends() {
     return {
         {"embree", AcceleratorKind::Embree, false},

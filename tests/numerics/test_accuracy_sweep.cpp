@@ -105,7 +105,7 @@ TEST_CASE("accuracy: the Pareto front keeps the settings nothing beats on time a
 TEST_CASE("accuracy: the sweep varies one knob at a time from the default") {
     const AccuracySetting d = defaultAccuracySetting();
     CHECK(d.flags() ==
-          "--spp 1 --depth 5 --precision double --bvh-quality medium --shadows filtered");
+          "--spp 1 --depth 5 --precision double --bvh-quality medium --robust --shadows filtered");
     CHECK(referenceAccuracySetting(64).flags() ==
           "--spp 64 --depth 12 --precision double --bvh-quality medium --robust --shadows filtered "
           "--texture-filter point --texture-footprint differentials");

@@ -429,3 +429,28 @@ TEST_CASE("output: output names are checked (extension, --png, duplicates)") {
     CHECK_MESSAGE(r.exitCode == 0, r.err);
     CHECK(dir.entries() == std::vector<std::string>{"balls.json", "only.png"});
 }
+
+TEST_CASE("output: robust traversal is the default; --no-robust and JSON robust false turn it off") {
+    TempDir dir;
+    writeText(dir.file("balls.json"), kThreeBalls);
+    std::string fast = kThreeBalls;
+    const size_t brace = fast.find('{');
+    REQUIRE(brace != std::string::npos);
+    fast.insert(brace + 1, "\"render\": {\"robust\": false},");
+    writeText(dir.file("fast.json"), fast);
+    const auto robustSetting = [&](const std::string& scene, const std::string& flags) {
+        const std::string exr = dir.file("r.exr");
+        const auto r = runCommand(raylabCmd("render " + dir.file(scene) + " -o " + exr +
+                                            " --quiet --width 8 --height 6 " + flags));
+        REQUIRE_MESSAGE(r.exitCode == 0, r.err);
+        const std::string settings = stringAttribute(exr, "raylab/settings");
+        if (settings.find(" robust=on ") != std::string::npos) return std::string("on");
+        if (settings.find(" robust=off ") != std::string::npos) return std::string("off");
+        return settings;
+    };
+    CHECK(robustSetting("balls.json", "") == "on");
+    CHECK(robustSetting("balls.json", "--no-robust") == "off");
+    CHECK(robustSetting("balls.json", "--no-robust --robust") == "on");
+    CHECK(robustSetting("fast.json", "") == "off");
+    CHECK(robustSetting("fast.json", "--robust") == "on");
+}

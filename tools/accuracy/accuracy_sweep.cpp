@@ -171,7 +171,7 @@ std::string AccuracySetting::flags() const {
     f += std::string(" --precision ") + (precision == Precision::Float ? "float" : "double");
     if (offset == OffsetMode::FixedEpsilon) f += " --epsilon " + shortNumber(epsilon);
     f += std::string(" --bvh-quality ") + bvhQualityName(quality);
-    if (robust) f += " --robust";
+    f += robust ? " --robust" : " --no-robust";
     f += std::string(" --shadows ") + shadowModeName(shadows);
     const TextureOptions defaults;
     if (textures.filter != defaults.filter || textures.footprint != defaults.footprint)
@@ -253,7 +253,7 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured, bo
     if (!quick)
         add("bvh", "bvh high",
             [](AccuracySetting& s) { s.quality = AccelOptions::BvhQuality::High; });
-    add("bvh", "robust traversal", [](AccuracySetting& s) { s.robust = true; });
+    add("bvh", "fast traversal", [](AccuracySetting& s) { s.robust = false; });
 
     // The classic Whitted shadow: every transmitter blocks its light (only
     // scenes with transmitters differ; the reference dims it by their kt).
@@ -300,10 +300,9 @@ std::vector<AccuracySetting> accuracySweepSettings(bool quick, bool textured, bo
             s.maxDepth = 12;
             s.minWeight = 0.05;
         });
-        add("combo", "spp 16, depth 8, robust", [](AccuracySetting& s) {
+        add("combo", "spp 16, depth 8", [](AccuracySetting& s) {
             s.spp = 16;
             s.maxDepth = 8;
-            s.robust = true;
         });
     }
     return v;

@@ -40,7 +40,7 @@ struct AccuracySetting {
     OffsetMode offset = OffsetMode::Robust;
     double epsilon = 1e-4;  ///< FixedEpsilon only
     AccelOptions::BvhQuality quality = AccelOptions::BvhQuality::Medium;
-    bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST
+    bool robust = true;  ///< RTC_SCENE_FLAG_ROBUST (false: --no-robust)
     ShadowMode shadows = ShadowMode::Filtered;  ///< feelers through transmitters (or blocked)
     TextureOptions textures;  ///< texture filter and footprint (textured scenes)
     /// --alpha-cutoff for every material (scenes with cut-outs); unset: each
@@ -58,7 +58,7 @@ struct AccuracySetting {
 };
 
 /// The renderer's defaults (1 spp through pixel centres, depth 5, double
-/// precision, robust offset, medium BVH, non-robust traversal).
+/// precision, robust offset, medium BVH, robust traversal).
 AccuracySetting defaultAccuracySetting();
 
 /// \brief The reference: `spp` stratified jittered samples per pixel, depth
