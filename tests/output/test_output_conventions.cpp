@@ -430,7 +430,7 @@ TEST_CASE("output: output names are checked (extension, --png, duplicates)") {
     CHECK(dir.entries() == std::vector<std::string>{"balls.json", "only.png"});
 }
 
-TEST_CASE("output: robust traversal is the default; --no-robust and JSON robust false turn it off") {
+TEST_CASE("output: robust traversal is the default, --no-robust and JSON robust false turn it off") {
     TempDir dir;
     writeText(dir.file("balls.json"), kThreeBalls);
     std::string fast = kThreeBalls;
