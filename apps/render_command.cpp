@@ -85,6 +85,11 @@ const char* const kRenderHelp =
     "                           opaque keeps it with A = 1\n"
     "  --compression none|rle|zips|zip|piz   lossless EXR compression (default zip; none and rle\n"
     "                           write fastest, zip and piz smallest: docs/benchmarks.md)\n"
+    "  --fsync                  also make the outputs survive a power loss: each file is flushed\n"
+    "                           to the disk (fsync) before its rename and its folder after\n"
+    "                           (costs ~0.1 s per fsync on a busy disk). Without it the outputs\n"
+    "                           are still replaced atomically for a crash, a signal or a reader\n"
+    "                           (docs/robustness.md#output-commit)\n"
     "  --stats FILE             write statistics as JSON (rays per type and depth, times, effects,\n"
     "                           samples that reached the ray cap, the objects with their objectId\n"
     "                           and Cryptomatte id)\n"
@@ -174,7 +179,7 @@ const CommandFlags kRenderFlags{
     kRenderHelp,
     {{"--output", "-o", true},      {"--png", "", true},         {"--exposure", "", true},
      {"--float", "", false},        {"--alpha", "", true},       {"--compression", "", true},
-     {"--stats", "", true},
+     {"--fsync", "", false},        {"--stats", "", true},
      {"--frames", "", true},
      {"--quiet", "-q", false},      {"--width", "", true},       {"--height", "", true},
      {"--spp", "", true},           {"--depth", "", true},       {"--seed", "", true},
@@ -198,6 +203,7 @@ struct RenderCli {
     std::optional<FrameRange> frames;  ///< --frames: a camera_path sequence
     bool triangulatePolygons = false;  ///< --polygons triangles
     bool quiet = false, floatPixels = false;
+    bool fsync = false;  ///< --fsync: outputs durable across a power loss
     ExrCompression compression = ExrCompression::Zip;
     double exposure = 0;
     RenderOverrides overrides;
@@ -278,6 +284,7 @@ RenderCli parseRenderArgs(const std::vector<std::string>& args) {
         }
         else if (a == "--quiet" || a == "-q") cli.quiet = true;
         else if (a == "--float") cli.floatPixels = true;
+        else if (a == "--fsync") cli.fsync = true;
         else if (a == "--compression") {
             const std::string v = p.choice(a, {std::begin(kExrCompressionNames),
                                                std::end(kExrCompressionNames)});
@@ -582,7 +589,8 @@ int renderCommand(const std::vector<std::string>& args) {
         exr.objectNames = objectNames;
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.
-        AtomicFileGroup files;
+        AtomicFileGroup files(cli.fsync ? AtomicFileGroup::Durability::PowerLoss
+                                        : AtomicFileGroup::Durability::ProcessCrash);
         std::vector<std::string> written;
         for (const OutputFlag& image : cli.images) {
             const std::string file = output(image.path);

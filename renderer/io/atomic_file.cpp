@@ -111,8 +111,8 @@ AtomicFileGroup::Staged createTemp(const std::string& requested) {
     }
 }
 
-/// Flushes a closed file's data to the disk: a crash after the rename must
-/// not leave a renamed but empty file (the writers close their own streams).
+/// Flushes a closed file's data to the disk: a power loss after the rename
+/// must not leave a renamed but empty file (the writers close their own streams).
 int syncFile(const std::string& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return errno;
@@ -121,8 +121,9 @@ int syncFile(const std::string& path) {
     return err;
 }
 
-/// A copy of `from` at `to` with `mode`, for file systems without hard links.
-int copyFile(const std::string& from, const std::string& to, mode_t mode) {
+/// A copy of `from` at `to` with `mode`, for file systems without hard links;
+/// synced to disk when `sync`.
+int copyFile(const std::string& from, const std::string& to, mode_t mode, bool sync) {
     const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
     if (in < 0) return errno;
     const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
@@ -146,7 +147,7 @@ int copyFile(const std::string& from, const std::string& to, mode_t mode) {
             if (w > 0) done += w;
         }
     }
-    if (err == 0 && ::fsync(out) != 0 && errno != EINVAL) err = errno;
+    if (sync && err == 0 && ::fsync(out) != 0 && errno != EINVAL) err = errno;
     ::close(in);
     if (::close(out) != 0 && err == 0) err = errno;
     if (err != 0) ::unlink(to.c_str());
@@ -155,8 +156,8 @@ int copyFile(const std::string& from, const std::string& to, mode_t mode) {
 
 /// Keeps the current content of `target` under a new name beside it, set in
 /// `backup`: a hard link (no copy, no data written), or a copy where links
-/// are not allowed. Returns 0 or the errno of the failure.
-int keepAside(const std::string& target, mode_t mode, std::string& backup) {
+/// are not allowed (synced when `sync`). Returns 0 or the errno of the failure.
+int keepAside(const std::string& target, mode_t mode, bool sync, std::string& backup) {
     for (int attempt = 0;; ++attempt) {
         backup = sideName(target, "old");
         if (::link(target.c_str(), backup.c_str()) == 0) return 0;
@@ -164,7 +165,7 @@ int keepAside(const std::string& target, mode_t mode, std::string& backup) {
         if (err == EPERM || err == EMLINK || err == EOPNOTSUPP || err == ENOSYS) {
             // No hard links here (FAT, some FUSE) or not for this file
             // (protected_hardlinks: it belongs to someone else): copy instead.
-            err = copyFile(target, backup, mode);
+            err = copyFile(target, backup, mode, sync);
             if (err == 0) return 0;
         }
         if (err != EEXIST || attempt >= 1000) {
@@ -230,8 +231,9 @@ void AtomicFileGroup::write(const std::string& path,
     } catch (...) {
         fail(path, staged.tmp, staged.slot, "unknown error");
     }
-    if (const int err = syncFile(staged.tmp))
-        fail(path, staged.tmp, staged.slot, "cannot flush to disk: " + errnoText(err));
+    if (m_durability == Durability::PowerLoss)
+        if (const int err = syncFile(staged.tmp))
+            fail(path, staged.tmp, staged.slot, "cannot flush to disk: " + errnoText(err));
     m_staged.push_back(staged);
 }
 
@@ -277,7 +279,8 @@ void AtomicFileGroup::commit() {
                 abandon(s.path, "it is no longer a regular file (it changed during the render)");
             if (::chmod(s.tmp.c_str(), st.st_mode & 07777) != 0)
                 abandon(s.path, "cannot give the new file the old one's mode: " + errnoText(errno));
-            if (const int err = keepAside(s.path, st.st_mode & 07777, r.backup))
+            if (const int err = keepAside(s.path, st.st_mode & 07777,
+                                          m_durability == Durability::PowerLoss, r.backup))
                 abandon(s.path, "cannot keep the old file aside until the new one is in place: " +
                                     errnoText(err));
         } else if (errno != ENOENT) {
@@ -312,11 +315,13 @@ void AtomicFileGroup::commit() {
                 throw InputError(path, 0, "interrupted while replacing the outputs" + problems);
             throw Cancelled(cancelSignal());
         }
-        // 3. Every target is in place: make the renames durable, drop the old
-        //    files (still in the section: a forced exit leaves no kept file).
-        std::set<std::string> directories;
-        for (const Staged& s : m_staged) directories.insert(directoryOf(s.path));
-        for (const std::string& dir : directories) syncDirectory(dir);
+        // 3. Every target is in place: make the renames durable if asked, drop
+        //    the old files (still in the section: a forced exit leaves no kept file).
+        if (m_durability == Durability::PowerLoss) {
+            std::set<std::string> directories;
+            for (const Staged& s : m_staged) directories.insert(directoryOf(s.path));
+            for (const std::string& dir : directories) syncDirectory(dir);
+        }
         for (const Replacement& r : plan)
             if (!r.backup.empty()) ::unlink(r.backup.c_str());
     }
