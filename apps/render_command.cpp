@@ -45,6 +45,7 @@
 #include "renderer/io/png_writer.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/io/text_file.h"
+#include "renderer/matte_coverage.h"
 #include "renderer/memory_limit.h"
 #include "renderer/polygon_options.h"
 #include "renderer/render.h"
@@ -587,6 +588,7 @@ int renderCommand(const std::vector<std::string>& args) {
         exr.frame = cli.frames ? frame : 0;
         exr.camera = cameraMatrices(scene.camera, options.width, options.height);
         exr.objectNames = objectNames;
+        exr.matteRanks = matteRanksOfSampling(options);
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.
         AtomicFileGroup files(cli.fsync ? AtomicFileGroup::Durability::PowerLoss

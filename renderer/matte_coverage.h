@@ -10,8 +10,21 @@
 #include <vector>
 
 #include "renderer/film.h"
+#include "renderer/render_options.h"
 
 namespace raylab {
+
+/// The most objects one pixel's coverage can hold with `options`' sampling:
+/// one per sample (--spp N: N; --spd: the four corners), kMatteRanks with
+/// --adaptive (its subdivided squares have many corners). It depends on the
+/// settings only, not on the picture, so every frame of a sequence writes the
+/// same Cryptomatte layers, as the specification asks.
+inline int matteRanksOfSampling(const RenderOptions& options) {
+    const int samples = options.adaptiveThreshold > 0 ? kMatteRanks
+                        : options.spd                  ? 4
+                                                       : options.spp;
+    return std::clamp(samples, 1, kMatteRanks);
+}
 
 class MatteCoverage {
 public:

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <Imath/half.h>
@@ -81,11 +82,29 @@ Imath::M44f toM44f(const Matrix44& m) {
     return r;
 }
 
-/// The Cryptomatte planes: per pixel kMatteRanks (id, coverage) pairs, the
+/// How many Cryptomatte ranks to write: `wanted` (the sampling's bound), or
+/// more if a pixel of the film holds more objects, rounded up to a whole
+/// layer of two ranks.
+int cryptomatteRanks(const Film& film, int wanted) {
+    int ranks = std::clamp(wanted, 1, kMatteRanks);
+    for (size_t i = 0; i < film.mattes.size(); i += kMatteRanks) {
+        int used = 0;
+        for (int r = 0; r < kMatteRanks; ++r) {
+            const MatteEntry& e = film.mattes[i + size_t(r)];
+            used += e.object >= 0 && e.coverage > 0;
+        }
+        ranks = std::max(ranks, used);
+    }
+    return (ranks + 1) / 2 * 2;
+}
+
+/// The Cryptomatte planes: per pixel `ranks` (id, coverage) pairs, the
 /// ids hashed from the object names. Objects that share a name share an id,
 /// so their coverages are merged; ranks stay sorted by decreasing coverage.
-FilmPlane cryptomattePlane(const Film& film, size_t n, const std::vector<std::string>& objectNames) {
-    FilmPlane out(n * 2 * kMatteRanks, 0.f);
+/// `ranks` is at least cryptomatteRanks(film, ...): no pixel loses a rank.
+FilmPlane cryptomattePlane(const Film& film, size_t n, const std::vector<std::string>& objectNames,
+                           int ranks) {
+    FilmPlane out(n * 2 * size_t(ranks), 0.f);
     if (film.mattes.size() != n * kMatteRanks) return out;
     std::vector<float> idOf;  // object index -> id float, computed once per object
     const auto id = [&](int object) {
@@ -102,22 +121,27 @@ FilmPlane cryptomattePlane(const Film& film, size_t n, const std::vector<std::st
         float coverage;
     };
     for (size_t i = 0; i < n; ++i) {
-        Rank ranks[kMatteRanks];
+        Rank merged[kMatteRanks];
         int count = 0;
         for (int r = 0; r < kMatteRanks; ++r) {
             const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
             if (e.object < 0 || !(e.coverage > 0)) continue;
             const float value = id(e.object);
             int k = 0;
-            while (k < count && std::memcmp(&ranks[k].id, &value, sizeof value) != 0) ++k;
-            if (k == count) ranks[count++] = {value, 0.f};
-            ranks[k].coverage += finiteClamp(e.coverage, 1.f);
+            while (k < count && std::memcmp(&merged[k].id, &value, sizeof value) != 0) ++k;
+            if (k == count) merged[count++] = {value, 0.f};
+            merged[k].coverage += finiteClamp(e.coverage, 1.f);
         }
-        std::stable_sort(ranks, ranks + count,
-                         [](const Rank& a, const Rank& b) { return a.coverage > b.coverage; });
-        for (int k = 0; k < count; ++k) {
-            out[(i * kMatteRanks + size_t(k)) * 2 + 0] = ranks[k].id;
-            out[(i * kMatteRanks + size_t(k)) * 2 + 1] = ranks[k].coverage;
+        // Stable insertion sort by decreasing coverage: at most kMatteRanks
+        // entries, already in order unless shared names merged some
+        // (std::stable_sort allocated a buffer per pixel: 30% of the write's
+        // serial part on balls).
+        for (int a = 1; a < count; ++a)
+            for (int b = a; b > 0 && merged[b].coverage > merged[b - 1].coverage; --b)
+                std::swap(merged[b], merged[b - 1]);
+        for (int k = 0; k < count; ++k) {  // count <= ranks (cryptomatteRanks)
+            out[(i * size_t(ranks) + size_t(k)) * 2 + 0] = merged[k].id;
+            out[(i * size_t(ranks) + size_t(k)) * 2 + 1] = merged[k].coverage;
         }
     }
     return out;
@@ -201,7 +225,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     const float* normal = floatPlane(film.normal, n * 3, 0.f, false, normalCopy);
     HalfPlane albedo = halfPlane(film.albedo, n * 3);
     const float* objectId = floatPlane(film.objectId, n, -1.f, false, objectIdCopy);
-    const FilmPlane crypto = cryptomattePlane(film, n, opts.objectNames);
+    const int matteRanks = cryptomatteRanks(film, opts.matteRanks);
+    const FilmPlane crypto = cryptomattePlane(film, n, opts.objectNames, matteRanks);
 
     // A crop render is the data window inside the full image's display window.
     const Imath::Box2i dataWindow = exrDataWindow(film);
@@ -266,8 +291,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId), sizeof(float),
                                      sizeof(float) * w));
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
-    const size_t cryptoStride = 2 * kMatteRanks * sizeof(float);
-    for (int layer = 0; layer < kMatteRanks / 2; ++layer) {
+    const size_t cryptoStride = 2 * size_t(matteRanks) * sizeof(float);
+    for (int layer = 0; layer < matteRanks / 2; ++layer) {
         const std::string base = std::string(kCryptoObjectLayer) + (layer < 10 ? "0" : "") +
                                  std::to_string(layer) + ".";
         const char* components[4] = {"R", "G", "B", "A"};

@@ -16,7 +16,8 @@
 //   objectId                  FLOAT, index of the first object hit, -1 for the
 //                             background (FLOAT so the -1 survives; exact below 2^24)
 //   CryptoObject00.R .G .B .A FLOAT, Cryptomatte: id and coverage of ranks 0 and
-//   CryptoObject01, 02        1, then 2 and 3, 4 and 5 (cryptomatte_id.h)
+//   CryptoObject01, 02        1, then 2 and 3, 4 and 5 (cryptomatte_id.h); only
+//                             the layers ExrOptions::matteRanks needs
 // Header attributes: software ("raylab VERSION"), worldToCamera and worldToNDC
 // (M44f, camera_matrices.h), cryptomatte/<key>/name|hash|conversion|manifest,
 // raylab/settings (the render settings that define the image, one line),
@@ -57,6 +58,11 @@ struct ExrOptions {
     /// Object names by index, hashed into the Cryptomatte ids; an index
     /// without a name is called "object<index>".
     std::vector<std::string> objectNames;
+    /// Cryptomatte ranks to write (1..kMatteRanks, rounded up to a whole layer
+    /// of two): the most objects a pixel can see with the render's sampling
+    /// (matteRanksOfSampling). Unused ranks would be zeros that cost as much
+    /// to compress as data. More are written if a pixel of the film needs them.
+    int matteRanks = kMatteRanks;
     /// Threads compressing scan-line blocks (0: one per hardware thread). OpenEXR's
     /// process-wide worker pool is grown to this size if it is smaller. The file's
     /// bytes do not depend on it.
@@ -77,7 +83,8 @@ std::string matteName(const std::vector<std::string>& objectNames, int index);
 /// HALF) are clamped to it, so no channel holds Inf or NaN; Z and distance
 /// hold 1e10 where they are NaN or infinite. An empty AOV vector is written
 /// as the Film default (Z and distance 1e10, N and albedo 0, objectId -1, no
-/// Cryptomatte coverage), so every file has all 25 channels.
+/// Cryptomatte coverage), so every file has the 17 channels up to CryptoObject00
+/// and 4 more per further Cryptomatte layer (25 with all three).
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent
 ///         or the file cannot be written; `path` is then left untouched.
 /// With `group`, the file is staged in it and appears at group->commit().

@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -396,4 +398,80 @@ TEST_CASE("exr: a rendered film's FLOAT layers are written from the film as they
     writeExr(dir.file("b.exr"), f, makeOptions(false));
     CHECK(readExr(dir.file("b.exr")).z[0] == kNoHitDepth);
     CHECK(readExr(dir.file("b.exr")).distance[1] == kNoHitDepth);
+}
+
+namespace {
+
+/// Every CryptoObject channel of `path`, by name.
+std::map<std::string, std::vector<float>> cryptoChannels(const std::string& path) {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i dw = in.header().dataWindow();
+    const size_t w = size_t(dw.max.x - dw.min.x + 1), h = size_t(dw.max.y - dw.min.y + 1);
+    std::map<std::string, std::vector<float>> planes;
+    Imf::FrameBuffer fb;
+    for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it) {
+        const std::string name = it.name();
+        if (name.rfind("CryptoObject", 0) != 0) continue;
+        std::vector<float>& plane = planes[name];
+        plane.assign(w * h, -7.f);
+        fb.insert(name, Imf::Slice::Make(Imf::FLOAT, plane.data(), dw, sizeof(float), sizeof(float) * w));
+    }
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    return planes;
+}
+
+}  // namespace
+
+TEST_CASE("exr: the Cryptomatte layers written are those the ranks need, with the same values") {
+    // Pixel 0: three objects (ranks 0..2), pixel 1: one, the rest none.
+    TempDir dir;
+    Film f = makeFilm();
+    f.mattes[0] = {3, 0.5f};
+    f.mattes[1] = {1, 0.25f};
+    f.mattes[2] = {4, 0.25f};
+    f.mattes[kMatteRanks] = {2, 1.f};
+    ExrOptions all = makeOptions(false);
+    writeExr(dir.file("all.exr"), f, all);  // the default: every rank
+    const auto reference = cryptoChannels(dir.file("all.exr"));
+    REQUIRE(reference.size() == 12);
+    // Hand values: rank 2 of pixel 0 is object 4 with coverage 0.25.
+    CHECK(reference.at("CryptoObject01.G")[0] == 0.25f);
+    CHECK(reference.at("CryptoObject01.R")[0] != 0.f);
+    CHECK(reference.at("CryptoObject01.G")[1] == 0.f);
+
+    // (ranks asked, layers written): one layer per two ranks, never fewer
+    // than pixel 0's three objects need, however few were asked for.
+    for (const auto& [ranks, layers] : {std::pair{1, 2}, std::pair{2, 2}, std::pair{3, 2},
+                                        std::pair{4, 2}, std::pair{5, 3}, std::pair{6, 3}}) {
+        CAPTURE(ranks);
+        ExrOptions o = all;
+        o.matteRanks = ranks;
+        const std::string path = dir.file("r" + std::to_string(ranks) + ".exr");
+        writeExr(path, f, o);
+        const auto written = cryptoChannels(path);
+        CHECK(written.size() == size_t(4 * layers));
+        for (const auto& [name, plane] : reference) {
+            CAPTURE(name);
+            if (written.count(name)) {
+                CHECK(std::memcmp(written.at(name).data(), plane.data(), plane.size() * 4) == 0);
+            } else {  // a layer left out held nothing
+                for (float v : plane) CHECK(v == 0.f);
+            }
+        }
+        // The other layers are untouched by the choice.
+        const Film back = readExr(path), full = readExr(dir.file("all.exr"));
+        CHECK(back.rgba == full.rgba);
+        CHECK(back.objectId == full.objectId);
+    }
+    // One object per pixel and one rank asked: CryptoObject00 alone.
+    Film single = makeFilm();
+    single.mattes[0] = {3, 1.f};
+    ExrOptions one = all;
+    one.matteRanks = 1;
+    writeExr(dir.file("one.exr"), single, one);
+    const auto oneLayer = cryptoChannels(dir.file("one.exr"));
+    CHECK(oneLayer.size() == 4);
+    CHECK(oneLayer.at("CryptoObject00.G")[0] == 1.f);
+    CHECK(channelTypes(dir.file("one.exr")).size() == 17);
 }

@@ -170,13 +170,12 @@ TEST_CASE("output: EXR channels, attributes and camera matrices") {
     const ExrImage img = readAll(exr);
     std::vector<std::string> names;
     for (const auto& [name, plane] : img.channels) names.push_back(name);
+    // One sample per pixel: one object per pixel, so one Cryptomatte layer
+    // (ranks 0 and 1; the next test has the layers of other samplings).
     CHECK(names == std::vector<std::string>{
                        "A", "B", "CryptoObject00.A", "CryptoObject00.B", "CryptoObject00.G",
-                       "CryptoObject00.R", "CryptoObject01.A", "CryptoObject01.B",
-                       "CryptoObject01.G", "CryptoObject01.R", "CryptoObject02.A",
-                       "CryptoObject02.B", "CryptoObject02.G", "CryptoObject02.R", "G", "N.X",
-                       "N.Y", "N.Z", "R", "Z", "albedo.B", "albedo.G", "albedo.R", "distance",
-                       "objectId"});
+                       "CryptoObject00.R", "G", "N.X", "N.Y", "N.Z", "R", "Z", "albedo.B",
+                       "albedo.G", "albedo.R", "distance", "objectId"});
     // Background: finite depth and distance, as Blender writes them.
     CHECK(img.at("Z", 0, 0) == 1e10f);
     CHECK(img.at("distance", 0, 0) == 1e10f);
@@ -310,6 +309,28 @@ TEST_CASE("output: Cryptomatte rank 0 decodes to the object at the pixel, covera
     CHECK(full > 20);
     CHECK(edges > 5);   // antialiased edges: several objects (or object and background) share a pixel
     CHECK(empty > 20);  // background
+}
+
+TEST_CASE("output: the Cryptomatte layers are those the sampling can fill, whatever the picture") {
+    // One rank per sample a pixel averages, two ranks per layer, at most
+    // three layers (six ranks): the same for every frame of a sequence.
+    TempDir dir;
+    writeText(dir.file("balls.json"), kThreeBalls);
+    const std::pair<std::string, int> cases[] = {
+        {"", 1}, {"--spp 2", 1}, {"--spp 3", 2}, {"--spp 4", 2}, {"--spd", 2},
+        {"--spp 5", 3}, {"--spp 16", 3}, {"--adaptive 0.1", 3}};
+    for (const auto& [flags, layers] : cases) {
+        CAPTURE(flags);
+        const std::string exr = dir.file("m.exr");
+        const auto r = runCommand(raylabCmd("render " + dir.file("balls.json") + " -o " + exr +
+                                            " --quiet --width 30 --height 20 " + flags));
+        REQUIRE_MESSAGE(r.exitCode == 0, r.err);
+        const ExrImage img = readAll(exr);
+        int crypto = 0;
+        for (const auto& [name, plane] : img.channels) crypto += name.rfind("CryptoObject", 0) == 0;
+        CHECK(crypto == 4 * layers);
+        CHECK(img.channels.size() == size_t(13 + 4 * layers));
+    }
 }
 
 TEST_CASE("output: --threads 1 and --threads 2 write byte-identical EXRs") {
