@@ -233,6 +233,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
                        dataWindow);
     header.compression() = toImf(opts.compression);
+    // Not stored in the file (any zlib reads any level): the speed/size trade.
+    header.zipCompressionLevel() = kExrZipLevel;
     if (!opts.software.empty()) header.insert("software", Imf::StringAttribute(opts.software));
     if (opts.camera) {
         header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
