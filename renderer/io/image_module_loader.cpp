@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/io/module_candidates.h"
 #include "renderer/memory_limit.h"
 
 namespace raylab {
@@ -29,16 +30,6 @@ constexpr const char* kProbeName = "raylab-openimageio-probe";
 constexpr double kProbeMargin = 64.0 * (1 << 20);
 
 extern "C" char** environ;
-
-/// The executable's folder, where an installed or copied raylab keeps the module.
-std::string executableFolder() {
-    char buffer[PATH_MAX];
-    const ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof buffer - 1);
-    if (n <= 0) return {};
-    std::string path(buffer, size_t(n));
-    const size_t slash = path.rfind('/');
-    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
 
 /// Runs the probe (image_module_probe.cpp) on `module` and `image`; the
 /// address space the module took there, or nullopt if the probe failed or
@@ -110,15 +101,13 @@ struct Loaded {
 std::atomic<bool> g_loaded{false};
 
 Loaded load(const std::string& image) {
-    std::vector<std::string> candidates;
-    if (std::string folder = executableFolder(); !folder.empty())
-        candidates.push_back(folder + kModuleName);
 #ifdef RAYLAB_IMAGE_MODULE_BUILD_PATH
-    // Test executables live elsewhere in the build tree than the module.
-    candidates.push_back(RAYLAB_IMAGE_MODULE_BUILD_PATH);
+    const char* buildPath = RAYLAB_IMAGE_MODULE_BUILD_PATH;
+#else
+    const char* buildPath = nullptr;
 #endif
     std::string reasons;
-    for (const std::string& path : candidates) {
+    for (const std::string& path : moduleCandidates(kModuleName, buildPath)) {
         if (::access(path.c_str(), F_OK) != 0) continue;
         if (const auto refusal = addressSpaceRefusal(path, image)) {
             reasons = *refusal;
