@@ -1,19 +1,15 @@
 #include "distributed/mpi_render.h"
 
-#include <algorithm>
-#include <stdexcept>
-#include <thread>
-
-#if RAYLAB_HAVE_MPI
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
+#include <thread>
 
 #include "distributed/config.h"
 #include "distributed/fault_injection.h"
 #include "distributed/frame_job.h"
 #include "distributed/work_schedule.h"
-#endif
 
 namespace raylab {
 
@@ -31,7 +27,6 @@ RenderResult renderDistributed(const MpiSession& mpi, const Scene& scene, const 
         if (report) *report = DistributedReport{};
         return render(scene, accel, options, effects, progress, cancel);
     }
-#if RAYLAB_HAVE_MPI
     // Every rank counts its calls the same way: the count names the frame in
     // each message (only the thread that owns the session calls this).
     static int32_t s_epoch = 0;
@@ -51,10 +46,6 @@ RenderResult renderDistributed(const MpiSession& mpi, const Scene& scene, const 
     const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
                                           size_t(job.threads) + 1);
     return mpi.isRoot() ? runRoot(job, progress, cancel, report) : runWorker(job, cancel);
-#else
-    // MpiSession refuses to start under mpirun in this build: never reached.
-    throw std::runtime_error("this raylab was built without MPI");
-#endif
 }
 
 }  // namespace raylab

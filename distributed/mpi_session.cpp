@@ -6,9 +6,7 @@
 #include <exception>
 #include <stdexcept>
 
-#if RAYLAB_HAVE_MPI
-#include "distributed/mpi_c_api.h"
-#endif
+#include "distributed/mpi_module_loader.h"
 
 namespace raylab {
 
@@ -36,56 +34,28 @@ bool launchedUnderMpirun() {
     return false;
 }
 
-#if RAYLAB_HAVE_MPI
-
 MpiSession::MpiSession() : m_host(hostName()) {
     if (!launchedUnderMpirun()) return;
-    int initialised = 0, finalised = 0;
-    MPI_Initialized(&initialised);
-    MPI_Finalized(&finalised);
-    if (initialised || finalised)
-        throw std::runtime_error("MPI: only one MpiSession per process");
-    int provided = 0;
-    if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
-        throw std::runtime_error("MPI: MPI_Init_thread failed");
+    if (!mpiAvailable())
+        throw std::runtime_error(
+            "this raylab was built without MPI (RAYLAB_MPI=OFF or MPI not found): it cannot "
+            "render across processes; install libopenmpi-dev and openmpi-bin and rebuild, or run "
+            "it without mpirun");
+    // Open MPI is loaded here, under a launcher only: a plain run never maps it.
+    const mpi_module::Api& api = mpiModule();
+    mpi_module::World world;
+    std::string error;
+    if (!api.start(world, error)) throw std::runtime_error(error);
     m_active = true;
-    if (provided < MPI_THREAD_FUNNELED) {
-        // Render threads coexist with MPI calls on the main thread; an MPI
-        // that cannot promise that is unusable here.
-        MPI_Finalize();
-        m_active = false;
-        throw std::runtime_error("MPI: the library does not provide MPI_THREAD_FUNNELED");
-    }
-    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-    MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &m_size);
-    // Ranks on this machine share its cores: the default thread count divides them.
-    MPI_Comm node;
-    if (MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, m_rank, MPI_INFO_NULL, &node) ==
-        MPI_SUCCESS) {
-        MPI_Comm_size(node, &m_nodeRanks);
-        MPI_Comm_free(&node);
-    }
+    m_rank = world.rank;
+    m_size = world.size;
+    m_nodeRanks = world.nodeRanks;
 }
 
 MpiSession::~MpiSession() {
     if (!m_active) return;
     if (std::uncaught_exceptions() > 0) return;
-    MPI_Finalize();
+    mpiModule().finish();
 }
-
-#else  // built without MPI
-
-MpiSession::MpiSession() : m_host(hostName()) {
-    if (launchedUnderMpirun())
-        throw std::runtime_error(
-            "this raylab was built without MPI (RAYLAB_MPI=OFF or MPI not found): it cannot "
-            "render across processes; install libopenmpi-dev and openmpi-bin and rebuild, or run "
-            "it without mpirun");
-}
-
-MpiSession::~MpiSession() = default;
-
-#endif
 
 }  // namespace raylab

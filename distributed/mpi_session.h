@@ -1,15 +1,18 @@
 #pragma once
-// The MPI lifetime of one raylab process. MPI is initialised only when the
-// process was started by an MPI launcher (mpirun, mpiexec, srun), so a plain
-// `raylab render` never touches MPI. Built without MPI (RAYLAB_MPI=OFF or no
-// MPI found), a launch under mpirun is refused with a clear message instead of
-// N processes silently rendering the same image.
+// The MPI lifetime of one raylab process. MPI is loaded (the module
+// raylab-mpi.so, mpi_module.h) and initialised only when the process was
+// started by an MPI launcher (mpirun, mpiexec, srun), so a plain
+// `raylab render` never maps or touches MPI. Built without MPI
+// (RAYLAB_MPI=OFF or no MPI found), or with the module missing, a launch
+// under mpirun is refused with a clear message instead of N processes
+// silently rendering the same image.
 
 #include <string>
 
 namespace raylab {
 
-/// True when this build can render across processes (compiled against MPI).
+/// True when this build can render across processes (its MPI module was
+/// built; whether it loads is found out under mpirun).
 bool mpiAvailable();
 
 /// True when the environment says an MPI launcher started this process
@@ -27,7 +30,8 @@ class MpiSession {
 public:
     /// Initialises MPI when launchedUnderMpirun(); otherwise an inactive
     /// session (rank 0 of 1). Throws std::runtime_error when launched under
-    /// mpirun by a build without MPI, or when MPI cannot be initialised.
+    /// mpirun by a build without MPI, when the MPI module cannot be loaded
+    /// (MpiModuleUnavailable), or when MPI cannot be initialised.
     MpiSession();
     /// Finalises MPI. While an exception is unwinding it does not: a rank that
     /// failed alone must not block in MPI_Finalize waiting for peers that wait

@@ -1,6 +1,5 @@
 #include "distributed/rank_agreement.h"
 
-#if RAYLAB_HAVE_MPI
 #include <chrono>
 #include <stdexcept>
 #include <thread>
@@ -10,11 +9,8 @@
 #include "distributed/protocol.h"
 #include "distributed/transport.h"
 #include "renderer/timing.h"
-#endif
 
 namespace raylab {
-
-#if RAYLAB_HAVE_MPI
 
 namespace {
 
@@ -84,12 +80,5 @@ std::string compareRanks(const MpiSession& mpi, const RenderIdentity& mine) {
                                  std::to_string(int(timeout)) + " s");
     return verdict;
 }
-
-#else  // built without MPI
-
-// MpiSession refuses to start under mpirun in this build: one rank, nothing to compare.
-std::string compareRanks(const MpiSession&, const RenderIdentity&) { return ""; }
-
-#endif
 
 }  // namespace raylab

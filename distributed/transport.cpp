@@ -7,39 +7,43 @@
 #include <thread>
 
 #include "distributed/config.h"
+#include "distributed/mpi_module_loader.h"
 #include "renderer/timing.h"
 
 namespace raylab {
 
 namespace {
 
-void check(int rc, const std::string& what) {
-    if (rc == MPI_SUCCESS) return;
-    char text[MPI_MAX_ERROR_STRING] = {};
-    int len = 0;
-    MPI_Error_string(rc, text, &len);
-    throw std::runtime_error("MPI: " + what + ": " + std::string(text, size_t(len)));
+/// Throws the failure of the MPI call `what` with MPI's own `text`.
+[[noreturn]] void fail(const std::string& what, const std::string& text) {
+    throw std::runtime_error("MPI: " + what + ": " + text);
 }
 
 }  // namespace
+
+Transport::Transport() : m_mpi(mpiModule()) {}
 
 Transport::~Transport() {
     for (Outgoing& o : m_out) new std::vector<unsigned char>(std::move(o.bytes));
 }
 
 void Transport::post(int dest, int tag, std::vector<unsigned char> bytes) {
-    m_out.push_back({MPI_REQUEST_NULL, std::move(bytes)});
+    m_out.push_back({nullptr, std::move(bytes)});
     Outgoing& o = m_out.back();
-    check(MPI_Isend(o.bytes.data(), int(o.bytes.size()), MPI_BYTE, dest, tag, MPI_COMM_WORLD,
-                    &o.request),
-          "send to rank " + std::to_string(dest));
+    std::string error;
+    o.send = m_mpi.send(dest, tag, o.bytes.data(), int(o.bytes.size()), error);
+    if (!o.send) {
+        m_out.pop_back();
+        fail("send to rank " + std::to_string(dest), error);
+    }
 }
 
 void Transport::progress() {
     for (auto it = m_out.begin(); it != m_out.end();) {
-        int flag = 0;
-        check(MPI_Test(&it->request, &flag, MPI_STATUS_IGNORE), "send");
-        it = flag ? m_out.erase(it) : std::next(it);
+        bool delivered = false;
+        std::string error;
+        if (!it->send->test(delivered, error)) fail("send", error);
+        it = delivered ? m_out.erase(it) : std::next(it);
     }
 }
 
@@ -54,20 +58,18 @@ bool Transport::flush(double timeout) {
 }
 
 bool Transport::probe(int source, int& tag, int& bytes) {
-    int flag = 0;
-    MPI_Status st;
-    check(MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st),
-          "probe rank " + std::to_string(source));
-    if (!flag) return false;
-    tag = st.MPI_TAG;
-    check(MPI_Get_count(&st, MPI_BYTE, &bytes), "message size");
-    return true;
+    bool found = false;
+    std::string error;
+    if (!m_mpi.probe(source, found, tag, bytes, error))
+        fail("probe rank " + std::to_string(source), error);
+    return found;
 }
 
 std::vector<unsigned char> Transport::receive(int source, int tag, int bytes) {
     std::vector<unsigned char> data(size_t(std::max(0, bytes)));
-    check(MPI_Recv(data.data(), bytes, MPI_BYTE, source, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-          "receive from rank " + std::to_string(source));
+    std::string error;
+    if (!m_mpi.receive(source, tag, data.data(), bytes, error))
+        fail("receive from rank " + std::to_string(source), error);
     return data;
 }
 

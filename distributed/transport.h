@@ -1,19 +1,22 @@
 #pragma once
-// Point-to-point MPI on MPI_COMM_WORLD with every call checked: errors return
-// (MPI_ERRORS_RETURN) and become exceptions naming the call. Sends are
-// non-blocking and kept until delivered, so neither side ever blocks on the other.
+// Point-to-point MPI on MPI_COMM_WORLD (through the MPI module, mpi_module.h)
+// with every call checked: errors return (MPI_ERRORS_RETURN) and become
+// exceptions naming the call. Sends are non-blocking and kept until
+// delivered, so neither side ever blocks on the other. Used only within an
+// active MpiSession, which has loaded the module.
 
 #include <list>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "distributed/mpi_c_api.h"
+#include "distributed/mpi_module.h"
 
 namespace raylab {
 
 class Transport {
 public:
-    Transport() = default;
+    Transport();
     /// Leaks the buffers of undelivered sends (only on an error path, just
     /// before the process ends): they must outlive MPI's use of them.
     ~Transport();
@@ -37,9 +40,10 @@ public:
 
 private:
     struct Outgoing {
-        MPI_Request request;
+        std::unique_ptr<mpi_module::Send> send;
         std::vector<unsigned char> bytes;
     };
+    const mpi_module::Api& m_mpi;
     std::list<Outgoing> m_out;  ///< std::list: buffers never move while MPI holds them
 };
 
