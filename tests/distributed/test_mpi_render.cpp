@@ -14,6 +14,7 @@
 #include <string>
 
 #include "distributed_test_helpers.h"
+#include "distributed/mpi_module_loader.h"
 #include "distributed/mpi_render.h"
 #include "distributed/mpi_session.h"
 #include "renderer/camera_path.h"
@@ -94,6 +95,12 @@ std::string spdScene() {
 }
 
 }  // namespace
+
+TEST_CASE("mpi: the session loaded the MPI module" * kUnderMpirun) {
+    REQUIRE(session().active());
+    CHECK(mpiModuleLoaded());
+    CHECK(session().size() >= 2);
+}
 
 TEST_CASE("mpi: demo scene tiles are bit-identical to one process" * kUnderMpirun) {
     const auto p = test::prepare(demoPath(), small(96, 64, 2));

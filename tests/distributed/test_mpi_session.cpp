@@ -1,5 +1,5 @@
-// Without mpirun nothing distributed happens: no MPI initialisation, and
-// renderDistributed is exactly the single-process render.
+// Without mpirun nothing distributed happens: no MPI loaded or initialised,
+// and renderDistributed is exactly the single-process render.
 
 #include <doctest/doctest.h>
 
@@ -10,8 +10,10 @@
 #include <thread>
 
 #include "distributed_test_helpers.h"
+#include "distributed/mpi_module_loader.h"
 #include "distributed/mpi_render.h"
 #include "distributed/mpi_session.h"
+#include "support/run_command.h"
 
 using namespace raylab;
 
@@ -90,6 +92,23 @@ TEST_CASE("MpiSession: a plain run stays single-process" * doctest::skip(launche
     CHECK(report.ranks == 1);
     CHECK(report.loads.empty());
     CHECK(formatLoadReport(report).empty());
+    // Open MPI stays out of this process (distributed/mpi_module.h).
+    CHECK_FALSE(mpiModuleLoaded());
+    const std::string maps = test::readFile("/proc/self/maps");
+    REQUIRE(maps.find("libembree3") != std::string::npos);  // the listing is there
+    CHECK(maps.find("libmpi") == std::string::npos);
+    CHECK(maps.find("libopen-pal") == std::string::npos);
+}
+
+TEST_CASE("the raylab executable names no MPI library: Open MPI is its module's") {
+    // ld.so lists what it would load (as ldd does) and runs nothing.
+    const test::CommandResult r =
+        test::runCommand("LD_TRACE_LOADED_OBJECTS=1 '" + std::string(RAYLAB_BINARY) + "'");
+    REQUIRE(r.exitCode == 0);
+    REQUIRE(r.out.find("libembree3") != std::string::npos);  // the listing is there
+    CHECK_MESSAGE(r.out.find("libmpi") == std::string::npos, r.out);
+    CHECK_MESSAGE(r.out.find("libopen-pal") == std::string::npos, r.out);
+    CHECK_MESSAGE(r.out.find("libhwloc") == std::string::npos, r.out);
 }
 
 TEST_CASE("threadsPerRank: explicit threads win, else all cores for a lone rank" *

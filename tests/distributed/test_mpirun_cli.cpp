@@ -331,3 +331,25 @@ TEST_CASE("mpirun cli: ranks with other image settings stop, other thread counts
     CHECK_MESSAGE(threads.exitCode == 0, threads.err);
     CHECK(std::filesystem::exists(dir.file("x.exr")));
 }
+
+TEST_CASE("mpirun cli: an MPI module that cannot be loaded is one error line per rank" *
+          kWithMpirun) {
+    // A copy of raylab with a broken raylab-mpi.so beside it: the loader takes
+    // the module beside the executable first, and reports it rather than
+    // falling back to the build tree's.
+    const test::TempDir dir;
+    const std::string copy = dir.file("raylab");
+    std::filesystem::copy_file(raylabBinary(), copy);
+    dir.write("raylab-mpi.so", "not a shared object\n");
+    const char* flags = std::getenv("RAYLAB_MPIRUN_FLAGS");
+    const Run r = runCommand(std::string(std::getenv("RAYLAB_MPIRUN")) + " -np 2 " +
+                             (flags ? flags : "") + " " + copy + " render " + demo() +
+                             " --width 32 --height 24 --quiet -o " + dir.file("x.exr"));
+    CHECK(r.exitCode == 1);
+    const std::string line = "raylab: error: MPI is not available (" + dir.file("raylab-mpi.so") + ": ";
+    CHECK_MESSAGE(r.err.rfind(line, 0) == 0, r.err);
+    // Each rank says it once (mpirun may end rank 1 before it does, once rank 0 has exited 1).
+    CHECK_MESSAGE((errorLines(r.err) == 1 || errorLines(r.err) == 2), r.err);
+    CHECK(r.err.find("Segmentation") == std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.exr")));
+}
