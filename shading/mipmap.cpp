@@ -136,14 +136,26 @@ Texel MipMap::bilinear(int level, Vec2 st, WrapMode wrap) const {
 
 double MipMap::levelOfDetail(Vec2 dstdx, Vec2 dstdy) const {
     const double w = width(0), h = height(0);
-    const double rx = std::hypot(dstdx.x * w, dstdx.y * h);
-    const double ry = std::hypot(dstdy.x * w, dstdy.y * h);
-    const double rho = std::max(rx, ry);
+    const double ax = dstdx.x * w, ay = dstdx.y * h, bx = dstdy.x * w, by = dstdy.y * h;
+    // ρ = max(hypot(a), hypot(b)). hypot is the costly part of a trilinear
+    // lookup; when the squared lengths differ by far more than their rounding
+    // (and neither under- nor overflows) the longer side is known and only its
+    // hypot is taken: the same ρ, bit for bit, as taking both.
+    const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by;
+    constexpr double kMargin = 1 + 1e-9, kTiny = 1e-290, kHuge = 1e290;
+    double rho;
+    if (a2 > kTiny && b2 > kTiny && a2 < kHuge && b2 < kHuge && (a2 > b2 * kMargin || b2 > a2 * kMargin))
+        rho = a2 > b2 ? std::hypot(ax, ay) : std::hypot(bx, by);
+    else
+        rho = std::max(std::hypot(ax, ay), std::hypot(bx, by));
     return rho > 0 && std::isfinite(rho) ? std::log2(rho) : 0.0;
 }
 
 Texel MipMap::trilinear(Vec2 st, Vec2 dstdx, Vec2 dstdy, WrapMode wrap) const {
-    const double lod = levelOfDetail(dstdx, dstdy);
+    return trilinear(st, levelOfDetail(dstdx, dstdy), wrap);
+}
+
+Texel MipMap::trilinear(Vec2 st, double lod, WrapMode wrap) const {
     if (lod <= 0) return bilinear(0, st, wrap);
     const int last = levels() - 1;
     if (lod >= last) return bilinear(last, st, wrap);

@@ -56,6 +56,9 @@ public:
     double levelOfDetail(Vec2 dstdx, Vec2 dstdy) const;
     /// Bilinear lookups on the two levels around levelOfDetail, blended.
     Texel trilinear(Vec2 st, Vec2 dstdx, Vec2 dstdy, WrapMode wrap) const;
+    /// The same at a level of detail computed before: lookups that share a
+    /// footprint (a bump map's three) compute it once.
+    Texel trilinear(Vec2 st, double lod, WrapMode wrap) const;
     /// EWA over the ellipse with axes dstdx, dstdy (its minor axis stretched
     /// to at most `maxAnisotropy` times shorter than the major), on the two
     /// levels around the minor axis's level, blended.

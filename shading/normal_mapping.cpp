@@ -15,12 +15,11 @@ Vec3 bumpedNormal(const SurfaceGeometry& sg, const Texture& height, double scale
     double dv = 0.5 * (std::abs(tc.duvdx.y) + std::abs(tc.duvdy.y));
     if (!(du > 0)) du = 0.0005;
     if (!(dv > 0)) dv = 0.0005;
-    TextureCoords shifted = tc;
-    const double h = scale * height.scalar(tc, filter);
-    shifted.uv = Vec2{tc.uv.x + du, tc.uv.y};
-    const double hu = scale * height.scalar(shifted, filter);
-    shifted.uv = Vec2{tc.uv.x, tc.uv.y + dv};
-    const double hv = scale * height.scalar(shifted, filter);
+    // The three lookups share the hit's footprint (and its level of detail).
+    const LookupFootprint fp = height.footprint(tc, filter);
+    const double h = scale * height.scalar(tc.uv, fp, filter);
+    const double hu = scale * height.scalar(Vec2{tc.uv.x + du, tc.uv.y}, fp, filter);
+    const double hv = scale * height.scalar(Vec2{tc.uv.x, tc.uv.y + dv}, fp, filter);
     // p' = p + h n: dp'/du = dp/du + dh/du n + h dn/du (and the same in v).
     const Vec3 dpdu = sg.dpdu + sg.ns * ((hu - h) / du) + sg.dndu * h;
     const Vec3 dpdv = sg.dpdv + sg.ns * ((hv - h) / dv) + sg.dndv * h;

@@ -42,31 +42,41 @@ Texture Texture::checker(const Color& even, const Color& odd) {
     return t;
 }
 
-Texel Texture::lookup(const TextureCoords& tc, TextureFilter filter) const {
+LookupFootprint Texture::footprint(const TextureCoords& tc, TextureFilter filter) const {
+    LookupFootprint fp;
+    fp.duvdx = tc.duvdx;
+    fp.duvdy = tc.duvdy;
+    if (m_kind != Kind::Image || !usesFootprint(filter)) return fp;
+    // Rows run down: t changes against v.
+    fp.dstdx = Vec2{scale.x * tc.duvdx.x, -scale.y * tc.duvdx.y};
+    fp.dstdy = Vec2{scale.x * tc.duvdy.x, -scale.y * tc.duvdy.y};
+    if (filter == TextureFilter::Trilinear) fp.lod = m_image->levelOfDetail(fp.dstdx, fp.dstdy);
+    return fp;
+}
+
+Texel Texture::lookup(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const {
     // (u, v) -> image (s, t): scale, offset, then flip t (rows run down).
-    const Vec2 st{scale.x * tc.uv.x + offset.x, 1.0 - (scale.y * tc.uv.y + offset.y)};
+    const Vec2 st{scale.x * uv.x + offset.x, 1.0 - (scale.y * uv.y + offset.y)};
     switch (filter) {
     case TextureFilter::Point:
         return m_image->point(st, wrap);
     case TextureFilter::Bilinear:
         return m_image->bilinear(0, st, wrap);
     case TextureFilter::Trilinear:
+        return m_image->trilinear(st, fp.lod, wrap);
     case TextureFilter::Anisotropic:
         break;
     }
-    const Vec2 dstdx{scale.x * tc.duvdx.x, -scale.y * tc.duvdx.y};
-    const Vec2 dstdy{scale.x * tc.duvdy.x, -scale.y * tc.duvdy.y};
-    return filter == TextureFilter::Trilinear ? m_image->trilinear(st, dstdx, dstdy, wrap)
-                                              : m_image->ewa(st, dstdx, dstdy, wrap);
+    return m_image->ewa(st, fp.dstdx, fp.dstdy, wrap);
 }
 
-Color Texture::checkerColor(const TextureCoords& tc, TextureFilter filter) const {
-    const double s = scale.x * tc.uv.x + offset.x, t = scale.y * tc.uv.y + offset.y;
+Color Texture::checkerColor(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const {
+    const double s = scale.x * uv.x + offset.x, t = scale.y * uv.y + offset.y;
     if (usesFootprint(filter)) {
         // Box filter over the sample's footprint, ± half a step each way,
         // in closed form (pbrt-v3's Checkerboard2DTexture).
-        const double ds = 0.5 * std::max(std::abs(scale.x * tc.duvdx.x), std::abs(scale.x * tc.duvdy.x));
-        const double dt = 0.5 * std::max(std::abs(scale.y * tc.duvdx.y), std::abs(scale.y * tc.duvdy.y));
+        const double ds = 0.5 * std::max(std::abs(scale.x * fp.duvdx.x), std::abs(scale.x * fp.duvdy.x));
+        const double dt = 0.5 * std::max(std::abs(scale.y * fp.duvdx.y), std::abs(scale.y * fp.duvdy.y));
         const double s0 = s - ds, s1 = s + ds, t0 = t - dt, t1 = t + dt;
         if (std::isfinite(ds) && std::isfinite(dt) &&
             (std::floor(s0) != std::floor(s1) || std::floor(t0) != std::floor(t1))) {
@@ -85,18 +95,26 @@ Color Texture::checkerColor(const TextureCoords& tc, TextureFilter filter) const
 }
 
 Color Texture::color(const TextureCoords& tc, TextureFilter filter) const {
-    if (m_kind == Kind::Checker) return checkerColor(tc, filter);
-    const Texel v = lookup(tc, filter);
+    return color(tc.uv, footprint(tc, filter), filter);
+}
+
+double Texture::scalar(const TextureCoords& tc, TextureFilter filter) const {
+    return scalar(tc.uv, footprint(tc, filter), filter);
+}
+
+Color Texture::color(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const {
+    if (m_kind == Kind::Checker) return checkerColor(uv, fp, filter);
+    const Texel v = lookup(uv, fp, filter);
     if (m_image->channels() < 3) return Color(v[0]);
     return Color(v[0], v[1], v[2]);
 }
 
-double Texture::scalar(const TextureCoords& tc, TextureFilter filter) const {
+double Texture::scalar(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const {
     if (m_kind == Kind::Checker) {
-        const Color c = checkerColor(tc, filter);
+        const Color c = checkerColor(uv, fp, filter);
         return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
     }
-    const Texel v = lookup(tc, filter);
+    const Texel v = lookup(uv, fp, filter);
     const int n = m_image->channels();
     const double luminance = n < 3 ? v[0] : 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2];
     switch (channel) {
@@ -112,6 +130,12 @@ double Texture::scalar(const TextureCoords& tc, TextureFilter filter) const {
         break;
     }
     return luminance;
+}
+
+bool Texture::sameColors(const Texture& other) const {
+    if (m_kind != other.m_kind || !(scale == other.scale) || !(offset == other.offset)) return false;
+    if (m_kind == Kind::Checker) return m_even == other.m_even && m_odd == other.m_odd;
+    return m_image == other.m_image && wrap == other.wrap;
 }
 
 }  // namespace raylab

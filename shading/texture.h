@@ -35,6 +35,16 @@ struct TextureCoords {
     Vec2 duvdx, duvdy;
 };
 
+/// What every lookup of one texture at one footprint shares (a bump map
+/// reads its height at three uv with the hit's footprint): the footprint in
+/// image coordinates and, for trilinear, its level of detail. Made by
+/// Texture::footprint; for that texture only (it holds its scale and size).
+struct LookupFootprint {
+    Vec2 duvdx, duvdy;  ///< the footprint in (u, v), for the checker's box
+    Vec2 dstdx, dstdy;  ///< the same in image (s, t)
+    double lod = 0;     ///< trilinear: MipMap::levelOfDetail(dstdx, dstdy)
+};
+
 /// Which value of a texel a scalar map (bump height, exponent) reads: MTL's
 /// -imfchan r|g|b|m|l|z.
 enum class TextureChannel { Red, Green, Blue, Matte, Luminance };
@@ -63,9 +73,20 @@ public:
     /// One value at `tc`, the `channel` of the texel.
     double scalar(const TextureCoords& tc, TextureFilter filter) const;
 
+    /// The footprint lookups of this texture at `tc` share. color(tc, f) is
+    /// color(tc.uv, footprint(tc, f), f), bit for bit.
+    LookupFootprint footprint(const TextureCoords& tc, TextureFilter filter) const;
+    Color color(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const;
+    double scalar(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const;
+
+    /// Whether color() of this and `other` give the same value everywhere
+    /// (same image or checker, placement and wrap): a material whose ka and
+    /// kd name the same map looks it up once.
+    bool sameColors(const Texture& other) const;
+
 private:
-    Texel lookup(const TextureCoords& tc, TextureFilter filter) const;
-    Color checkerColor(const TextureCoords& tc, TextureFilter filter) const;
+    Texel lookup(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const;
+    Color checkerColor(Vec2 uv, const LookupFootprint& fp, TextureFilter filter) const;
 
     Kind m_kind = Kind::Image;
     std::shared_ptr<const MipMap> m_image;

@@ -1,10 +1,13 @@
 // Texture lookups against hand-computed values: sRGB decoding, the exact
 // bilinear weights on a 2x2 image, wrap modes, the v orientation, the MIP
-// pyramid and its level of detail, the box-filtered checkerboard, and bump
-// and normal maps.
+// pyramid and its level of detail, the box-filtered checkerboard, bump and
+// normal maps, and what lookups at one hit share (the level of detail, a map
+// named twice).
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 
 #include "shading/material_textures.h"
@@ -243,4 +246,125 @@ TEST_CASE("bump map: a height ramp in u tilts the normal against the slope") {
     Texture flat = Texture::fromImage(std::make_shared<const MipMap>(1, 1, 1, std::vector<float>{0.7f}), "f");
     const Vec3 same = bumpedNormal(sg, flat, 3.0, tc, TextureFilter::Point);
     CHECK(same.z == doctest::Approx(1.0));
+}
+
+namespace {
+
+/// A 37x23 RGB image of unrelated values (a fixed linear congruential
+/// sequence), so every texel, level and filter weight shows in a lookup.
+std::shared_ptr<const MipMap> noisyImage() {
+    std::vector<float> v(37 * 23 * 3);
+    uint32_t x = 12345;
+    for (float& f : v) {
+        x = x * 1664525u + 1013904223u;
+        f = float(x >> 8) / float(1 << 24);
+    }
+    return std::make_shared<const MipMap>(37, 23, 3, std::move(v));
+}
+
+/// The level of detail as issue 18's first version took it, both sides'
+/// hypot always: the reference for the one-hypot shortcut.
+double levelOfDetailBothSides(const MipMap& m, Vec2 dstdx, Vec2 dstdy) {
+    const double w = m.width(0), h = m.height(0);
+    const double rho =
+        std::max(std::hypot(dstdx.x * w, dstdx.y * h), std::hypot(dstdy.x * w, dstdy.y * h));
+    return rho > 0 && std::isfinite(rho) ? std::log2(rho) : 0.0;
+}
+
+}  // namespace
+
+TEST_CASE("level of detail: the one-hypot shortcut gives both sides' value, bit for bit") {
+    const std::shared_ptr<const MipMap> m = noisyImage();
+    const double tiny = 1e-160, huge = 1e160, nan = std::nan("");
+    const Vec2 steps[] = {{0, 0},        {0.01, 0},      {0, 0.01},     {0.01, 0.01},
+                          {-0.3, 0.002}, {1e-9, -2e-9},  {0.05, 0.05},  {0.05, -0.05},
+                          {tiny, tiny},  {huge, 1},      {1e-300, 0},   {nan, 0.1},
+                          {0.1, nan},    {3e7, 3e7},     {0.0123, 0.0456}};
+    for (const Vec2& a : steps)
+        for (const Vec2& b : steps) {
+            const double ref = levelOfDetailBothSides(*m, a, b);
+            const double got = m->levelOfDetail(a, b);
+            CHECK(std::memcmp(&ref, &got, sizeof ref) == 0);
+        }
+    // Sides whose squares differ by less than the shortcut's margin: the
+    // same length up to rounding, in both orders.
+    const Vec2 a{0.1, 0.2};
+    const Vec2 b{0.1 * (1 + 1e-15), 0.2};
+    CHECK(m->levelOfDetail(a, b) == levelOfDetailBothSides(*m, a, b));
+    CHECK(m->levelOfDetail(b, a) == levelOfDetailBothSides(*m, b, a));
+}
+
+TEST_CASE("shared footprint: lookups at one prepared footprint equal lookups that each take it") {
+    // A bump map reads three uv with one footprint (and one level of detail);
+    // every filter and wrap must give what separate lookups give, bit for bit.
+    Texture t = Texture::fromImage(noisyImage(), "noise");
+    t.scale = {2.5, 0.75};
+    t.offset = {0.1, -0.3};
+    const Texture checker = Texture::checker(Color(0.9, 0.2, 0.1), Color(0.1, 0.3, 0.8));
+    const TextureFilter filters[] = {TextureFilter::Point, TextureFilter::Bilinear,
+                                     TextureFilter::Trilinear, TextureFilter::Anisotropic};
+    const Vec2 footprints[][2] = {{{0, 0}, {0, 0}},           {{0.001, 0}, {0, 0.002}},
+                                  {{0.03, 0.01}, {-0.02, 0.05}}, {{0.4, 0}, {0, 0.01}},
+                                  {{2, 3}, {-3, 2}}};
+    int compared = 0;
+    for (WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp, WrapMode::Black}) {
+        t.wrap = wrap;
+        for (TextureFilter f : filters)
+            for (const auto& d : footprints) {
+                TextureCoords tc;
+                tc.uv = {0.37, 0.81};
+                tc.duvdx = d[0];
+                tc.duvdy = d[1];
+                const LookupFootprint fp = t.footprint(tc, f);
+                const LookupFootprint cfp = checker.footprint(tc, f);
+                for (const Vec2 uv : {Vec2{0.37, 0.81}, Vec2{0.3705, 0.81}, Vec2{0.37, 0.8105},
+                                      Vec2{-1.2, 1.7}}) {
+                    TextureCoords own = tc;
+                    own.uv = uv;
+                    CHECK(t.color(uv, fp, f) == t.color(own, f));
+                    CHECK(t.scalar(uv, fp, f) == t.scalar(own, f));
+                    CHECK(checker.color(uv, cfp, f) == checker.color(own, f));
+                    ++compared;
+                }
+            }
+    }
+    CHECK(compared == 3 * 4 * 5 * 4);
+}
+
+TEST_CASE("textured optics: equal maps on ka and kd are looked up once, with the same values") {
+    const std::shared_ptr<const MipMap> image = noisyImage();
+    Texture a = Texture::fromImage(image, "noise");
+    a.scale = {3, 2};
+    Texture same = a;           // another entry with the same image and placement
+    Texture moved = a;          // the same image placed elsewhere
+    moved.offset = {0.5, 0};
+    Texture clamped = a;        // wrapped differently
+    clamped.wrap = WrapMode::Clamp;
+    CHECK(a.sameColors(same));
+    CHECK_FALSE(a.sameColors(moved));
+    CHECK_FALSE(a.sameColors(clamped));
+    CHECK_FALSE(a.sameColors(Texture::fromImage(noisyImage(), "noise")));  // another file
+    CHECK(Texture::checker(Color(1), Color(0)).sameColors(Texture::checker(Color(1), Color(0))));
+    CHECK_FALSE(Texture::checker(Color(1), Color(0)).sameColors(Texture::checker(Color(1), Color(0.5))));
+
+    // The values: each map's own lookup times its constant.
+    const std::vector<Texture> textures{a, same, moved};
+    Material m;
+    m.ka = Color(0.2, 0.3, 0.4);
+    m.kd = Color(0.5, 0.6, 0.7);
+    m.ks = Color(0.9, 0.8, 0.1);
+    m.maps.ka = 0;
+    m.maps.kd = 1;
+    m.maps.ks = 2;
+    TextureCoords tc;
+    tc.uv = {0.3, 0.6};
+    tc.duvdx = {0.01, 0.002};
+    tc.duvdy = {-0.003, 0.02};
+    for (TextureFilter f : {TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::Anisotropic}) {
+        const SurfaceOptics o = evaluateOptics(m, textures, tc, f);
+        CHECK(o.ka == m.ka * a.color(tc, f));
+        CHECK(o.kd == m.kd * same.color(tc, f));
+        CHECK(o.ks == m.ks * moved.color(tc, f));
+        CHECK_FALSE(a.color(tc, f) == moved.color(tc, f));
+    }
 }
