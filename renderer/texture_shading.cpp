@@ -40,8 +40,7 @@ HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, doubl
         hf.curvature = entering ? k : -k;
     }
     TextureCoords& tc = hf.coords;
-    surfaceParameterChange(si.dpdu, si.dpdv, hf.dpdx, tc.duvdx.x, tc.duvdx.y);
-    surfaceParameterChange(si.dpdu, si.dpdv, hf.dpdy, tc.duvdy.x, tc.duvdy.y);
+    surfaceParameterChanges(si.dpdu, si.dpdv, hf.dpdx, hf.dpdy, tc.duvdx, tc.duvdy);
     const double sign = entering ? 1.0 : -1.0;
     hf.dndx = (si.dndu * tc.duvdx.x + si.dndv * tc.duvdx.y) * sign;
     hf.dndy = (si.dndu * tc.duvdy.x + si.dndv * tc.duvdy.y) * sign;

@@ -67,18 +67,42 @@ RayDifferential refractDifferential(const RayDifferential& rd, const Vec3& d, co
     return out;
 }
 
+namespace {
+
+/// The 2x2 normal equations of surfaceParameterChange, set up once for the
+/// tangents and solved for any dp.
+struct TangentSystem {
+    double a00, a01, a11, det;
+    bool solvable;
+
+    TangentSystem(const Vec3& dpdu, const Vec3& dpdv)
+        : a00(dot(dpdu, dpdu)), a01(dot(dpdu, dpdv)), a11(dot(dpdv, dpdv)),
+          det(a00 * a11 - a01 * a01), solvable(std::abs(det) > 0 && std::isfinite(det)) {}
+
+    Vec2 solve(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp) const {
+        if (!solvable) return Vec2{0, 0};
+        const double b0 = dot(dpdu, dp), b1 = dot(dpdv, dp);
+        const auto clampFinite = [](double x) {
+            return std::isfinite(x) ? std::clamp(x, -1e8, 1e8) : 0.0;
+        };
+        return Vec2{clampFinite((a11 * b0 - a01 * b1) / det), clampFinite((a00 * b1 - a01 * b0) / det)};
+    }
+};
+
+}  // namespace
+
 void surfaceParameterChange(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp, double& du,
                             double& dv) {
-    const double a00 = dot(dpdu, dpdu), a01 = dot(dpdu, dpdv), a11 = dot(dpdv, dpdv);
-    const double det = a00 * a11 - a01 * a01;
-    const double b0 = dot(dpdu, dp), b1 = dot(dpdv, dp);
-    du = dv = 0;
-    if (!(std::abs(det) > 0) || !std::isfinite(det)) return;
-    const auto clampFinite = [](double x) {
-        return std::isfinite(x) ? std::clamp(x, -1e8, 1e8) : 0.0;
-    };
-    du = clampFinite((a11 * b0 - a01 * b1) / det);
-    dv = clampFinite((a00 * b1 - a01 * b0) / det);
+    const Vec2 d = TangentSystem(dpdu, dpdv).solve(dpdu, dpdv, dp);
+    du = d.x;
+    dv = d.y;
+}
+
+void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dpdx, const Vec3& dpdy,
+                             Vec2& duvdx, Vec2& duvdy) {
+    const TangentSystem system(dpdu, dpdv);
+    duvdx = system.solve(dpdu, dpdv, dpdx);
+    duvdy = system.solve(dpdu, dpdv, dpdy);
 }
 
 }  // namespace raylab

@@ -7,6 +7,7 @@
 // quantities as offset rays; the formulas here are Igehy's, in derivatives.
 
 #include "geometry/vec.h"
+#include "geometry/vec2.h"
 
 namespace raylab {
 
@@ -38,5 +39,9 @@ RayDifferential refractDifferential(const RayDifferential& rd, const Vec3& d, co
 /// ComputeDifferentials): zero when the tangents span no area, clamped to ±1e8.
 void surfaceParameterChange(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp, double& du,
                             double& dv);
+/// The same for the two steps of a hit, the system set up once:
+/// duvdx = (du, dv) of dpdx, duvdy of dpdy.
+void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dpdx, const Vec3& dpdy,
+                             Vec2& duvdx, Vec2& duvdy);
 
 }  // namespace raylab
