@@ -93,26 +93,36 @@ Ray Camera::generateRay(double px, double py, int width, int height) const {
 
 RayDifferential Camera::differential(const Ray& ray, int width, int height,
                                      double spacing) const {
+    return differential(ray, differentialSteps(width, height, spacing));
+}
+
+Camera::DifferentialSteps Camera::differentialSteps(int width, int height, double spacing) const {
     const CameraFrame& f = m_frame;
     const double aspect = double(width) / double(height);
-    RayDifferential rd;
     if (m_projection == Projection::Perspective) {
-        // The unnormalised direction d' = u sx hw + v sy hh - w has w-component
-        // -1; its change per pixel is u (2 hw / W) and v (-2 hh / H), and the
-        // unit direction d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|.
+        // The unnormalised direction d' = u sx hw + v sy hh - w changes per
+        // pixel by u (2 hw / W) and v (-2 hh / H).
         const double halfHeight = m_tanHalfFov, halfWidth = halfHeight * aspect;
-        const Vec3 d = normalize(ray.d);
-        const double along = -dot(d, f.w);
-        const double len = 1.0 / along;  // |d'|
-        const Vec3 ddx = f.u * (2.0 * halfWidth / width * spacing);
-        const Vec3 ddy = f.v * (-2.0 * halfHeight / height * spacing);
-        rd.dddx = (ddx - d * dot(d, ddx)) / len;
-        rd.dddy = (ddy - d * dot(d, ddy)) / len;
-        return rd;
+        return {f.u * (2.0 * halfWidth / width * spacing), f.v * (-2.0 * halfHeight / height * spacing)};
     }
     const double halfWidth = 0.5 * m_viewWidth, halfHeight = halfWidth / aspect;
-    rd.dodx = f.u * (2.0 * halfWidth / width * spacing);
-    rd.dody = f.v * (-2.0 * halfHeight / height * spacing);
+    return {f.u * (2.0 * halfWidth / width * spacing), f.v * (-2.0 * halfHeight / height * spacing)};
+}
+
+RayDifferential Camera::differential(const Ray& ray, const DifferentialSteps& steps) const {
+    RayDifferential rd;
+    if (m_projection == Projection::Perspective) {
+        // d' has w-component -1, so |d'| = 1 / (-d·w); the unit direction
+        // d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|.
+        const Vec3 d = normalize(ray.d);
+        const double along = -dot(d, m_frame.w);
+        const double len = 1.0 / along;  // |d'|
+        rd.dddx = (steps.dx - d * dot(d, steps.dx)) / len;
+        rd.dddy = (steps.dy - d * dot(d, steps.dy)) / len;
+        return rd;
+    }
+    rd.dodx = steps.dx;
+    rd.dody = steps.dy;
     return rd;
 }
 

@@ -53,6 +53,16 @@ public:
     /// of `spacing` pixels right (x) and down (y): derived from the ray
     /// itself, so callers need not know which pixel it came through.
     RayDifferential differential(const Ray& ray, int width, int height, double spacing) const;
+    /// What differential() needs of the image, once per image rather than
+    /// per ray: the change per step of the unnormalised direction
+    /// (perspective) or of the origin (orthographic).
+    struct DifferentialSteps {
+        Vec3 dx, dy;
+    };
+    DifferentialSteps differentialSteps(int width, int height, double spacing) const;
+    /// differential(ray, width, height, spacing) with the steps computed
+    /// before, bit for bit.
+    RayDifferential differential(const Ray& ray, const DifferentialSteps& steps) const;
     /// The ray cone of a sample `spacing` pixels wide (RTG ch. 20: width 0
     /// and the pixel's spread angle, or an orthographic pixel's width).
     RayCone cone(int width, int height, double spacing) const;

@@ -11,6 +11,7 @@ TextureShading::TextureShading(const Scene& scene, const RenderOptions& options)
     : m_scene(scene), m_options(options), m_footprints(usesFootprint(options.textures.filter)) {
     // A footprint per sample: stratified samples are 1/√spp pixels apart.
     if (options.spp > 1) m_spacing = 1.0 / std::sqrt(double(options.spp));
+    m_cameraSteps = scene.camera.differentialSteps(options.width, options.height, m_spacing);
 }
 
 RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
@@ -18,19 +19,24 @@ RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
     if (!m_footprints) return fp;
     const Camera& camera = m_scene.camera;
     if (m_options.textures.footprint == TextureFootprint::Differentials)
-        fp.differential = camera.differential(cameraRay, m_options.width, m_options.height, m_spacing);
+        fp.differential = camera.differential(cameraRay, m_cameraSteps);
     else
         fp.cone = camera.cone(m_options.width, m_options.height, m_spacing);
     return fp;
 }
 
-HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, double t,
-                                   const SurfaceInteraction& si, bool entering) const {
+HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir,
+                                   double t, const SurfaceInteraction& si, bool entering) const {
     HitFootprint hf;
     hf.coords.uv = si.uv;
     if (!m_footprints) return hf;
-    const double len = length(ray.d);
-    const Vec3 d = ray.d / len;
+    // The unit direction is ray.d / length(ray.d): where squaring is safe
+    // (every ray but a degenerate one) that is normalize(ray.d), the
+    // integrator's dir, bit for bit, and its divisions are saved.
+    const double l2 = dot(ray.d, ray.d);
+    const bool safe = squaredLengthIsSafe(l2);
+    const double len = safe ? std::sqrt(l2) : length(ray.d);
+    const Vec3 d = safe ? dir : ray.d / len;
     if (m_options.textures.footprint == TextureFootprint::Differentials) {
         transferDifferential(fp.differential, d, t * len, si.ng, hf.dpdx, hf.dpdy);
     } else {

@@ -34,9 +34,10 @@ public:
 
     /// The footprint a camera ray starts with (one sample: 1/√spp pixels).
     RayFootprint cameraFootprint(const Ray& cameraRay) const;
-    /// The footprint at a hit at parameter t of `ray`; `si` has
+    /// The footprint at a hit at parameter t of `ray`; `dir` is
+    /// normalize(ray.d) (the integrator has it); `si` has
     /// SurfaceDetail::Complete; `entering` as in the integrator.
-    HitFootprint atHit(const RayFootprint& fp, const Ray& ray, double t,
+    HitFootprint atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir, double t,
                        const SurfaceInteraction& si, bool entering) const;
     /// The material's values at the hit; bends si.ns by its bump or normal map.
     SurfaceOptics shade(const Material& m, SurfaceInteraction& si, const HitFootprint& hf) const;
@@ -53,6 +54,7 @@ private:
     RenderOptions m_options;
     bool m_footprints;     ///< the filter reads footprints (trilinear, anisotropic)
     double m_spacing = 1;  ///< sample spacing in pixels
+    Camera::DifferentialSteps m_cameraSteps;  ///< the camera's per-image part of its differentials
 };
 
 }  // namespace raylab

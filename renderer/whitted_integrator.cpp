@@ -153,13 +153,14 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     // `entering` is false when the ray is inside the object (it hit the back
     // of the outward normal).
     const bool entering = si.frontFace;
+    const Vec3 dir = normalize(ray.d);
     const SurfaceOptics* optics = &m_scene.materials[si.material];
     [[maybe_unused]] HitFootprintOf<E> hitFootprint{};
     [[maybe_unused]] SurfaceOptics texturedOptics;
     if constexpr (textured(E)) {
         // Untextured materials pass the footprint on too (a plain mirror
         // showing a textured object).
-        hitFootprint = m_textures->atHit(footprint, ray, si.t, si, entering);
+        hitFootprint = m_textures->atHit(footprint, ray, dir, si.t, si, entering);
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any()) {
             texturedOptics = m_textures->shade(material, si, hitFootprint);
@@ -170,7 +171,6 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     // Normals on the side the ray arrives from.
     const Vec3 n = entering ? si.ns : -si.ns;
     const Vec3 ng = entering ? si.ng : -si.ng;
-    const Vec3 dir = normalize(ray.d);
 
     if (first) {
         first->hit = true;

@@ -157,7 +157,7 @@ TEST_CASE("MIP level on a fronto-parallel quad: log2 of texels per pixel, cones 
             const auto hit = accel->intersect(r, 0, 1e30);
             REQUIRE(hit);
             const SurfaceInteraction si = s.surfaceAt(r, *hit, {}, SurfaceDetail::Complete);
-            const HitFootprint hf = shading.atHit(shading.cameraFootprint(r), r, hit->t, si, true);
+            const HitFootprint hf = shading.atHit(shading.cameraFootprint(r), r, normalize(r.d), hit->t, si, true);
             const Vec2 dstdx{hf.coords.duvdx.x, -hf.coords.duvdx.y};
             const Vec2 dstdy{hf.coords.duvdy.x, -hf.coords.duvdy.y};
             const double lod = s.textures[0].image()->levelOfDetail(dstdx, dstdy);
