@@ -36,23 +36,15 @@ Loaded load() {
         // (mca_*.so), and 14 of Debian 12's 120 (btl tcp among them) do not
         // name libmpi or libopen-pal as dependencies: they find them in the
         // global scope.
-        // Never closed: MPI keeps threads and state until exit.
-        void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
-        if (!handle) {
-            const char* e = ::dlerror();
-            reasons = e ? e : ("cannot load " + path);
-            break;
-        }
-        using Entry = const mpi_module::Api* (*)();
-        auto entry = reinterpret_cast<Entry>(::dlsym(handle, mpi_module::kEntryPoint));
-        const mpi_module::Api* api = entry ? entry() : nullptr;
-        if (!api || api->version != mpi_module::kVersion) {
-            reasons = path + " is not raylab's MPI module of interface version " +
-                      std::to_string(mpi_module::kVersion);
+        const auto opened =
+            openModule<mpi_module::Api>(path, RTLD_NOW | RTLD_GLOBAL, mpi_module::kEntryPoint,
+                                        mpi_module::kVersion, "MPI");
+        if (!opened.api) {
+            reasons = opened.failure;
             break;
         }
         g_loaded = true;
-        return {api, {}};
+        return {opened.api, {}};
     }
     if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
     return {nullptr, "MPI is not available (" + reasons + ")"};

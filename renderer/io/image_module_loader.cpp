@@ -113,24 +113,15 @@ Loaded load(const std::string& image) {
             reasons = *refusal;
             break;
         }
-        // The module is never closed: OpenImageIO keeps threads and caches
-        // until exit.
-        void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) {
-            const char* e = ::dlerror();
-            reasons = e ? e : ("cannot load " + path);
-            continue;
-        }
-        using Entry = const image_module::Api* (*)();
-        auto entry = reinterpret_cast<Entry>(::dlsym(handle, image_module::kEntryPoint));
-        const image_module::Api* api = entry ? entry() : nullptr;
-        if (!api || api->version != image_module::kVersion) {
-            reasons = path + " is not raylab's image module of interface version " +
-                      std::to_string(image_module::kVersion);
+        const auto opened =
+            openModule<image_module::Api>(path, RTLD_NOW | RTLD_LOCAL, image_module::kEntryPoint,
+                                          image_module::kVersion, "image");
+        if (!opened.api) {
+            reasons = opened.failure;
             continue;
         }
         g_loaded = true;
-        return {api, {}};
+        return {opened.api, {}};
     }
     if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
     return {nullptr, "OpenImageIO is not available (" + reasons + ")"};
