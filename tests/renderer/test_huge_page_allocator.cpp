@@ -1,6 +1,6 @@
 // The frame buffers' allocator: small requests through operator new, large
 // ones as 2 MiB-aligned mappings with the huge-page hint; containers behave
-// as with std::allocator.
+// as with std::allocator. HugeArray: zero-filled fixed arrays on the same mappings.
 
 #include <doctest/doctest.h>
 
@@ -8,6 +8,7 @@
 #include <numeric>
 #include <vector>
 
+#include "renderer/huge_array.h"
 #include "renderer/huge_page_allocator.h"
 
 using namespace raylab;
@@ -37,4 +38,28 @@ TEST_CASE("huge page allocator: a vector grows across the threshold and keeps it
     CHECK(moved.back() == (3u << 20) - 1);
     moved.assign(10, 7u);  // back below the threshold
     CHECK(moved == std::vector<uint32_t, HugePageAllocator<uint32_t>>(10, 7u));
+}
+
+TEST_CASE("HugeArray: zero bytes at any size, 2 MiB-aligned when large, moves and frees") {
+    for (size_t n : {size_t(1), size_t(1000), (huge_pages::kThreshold / 8) - 1,
+                     huge_pages::kThreshold / 8, size_t(3) << 20}) {
+        CAPTURE(n);
+        HugeArray<uint64_t> a(n);
+        REQUIRE(a.size() == n);
+        if (n * 8 >= huge_pages::kThreshold)
+            CHECK(reinterpret_cast<uintptr_t>(a.data()) % huge_pages::kHugePage == 0);
+        uint64_t nonZero = 0;
+        for (size_t i = 0; i < n; ++i) nonZero += a[i] != 0;
+        CHECK(nonZero == 0);
+        a[n - 1] = 42;
+        HugeArray<uint64_t> b(std::move(a));
+        CHECK(a.empty());
+        CHECK(b.size() == n);
+        CHECK(b[n - 1] == 42);
+        b.release();
+        CHECK(b.empty());
+        CHECK(b.data() == nullptr);
+    }
+    HugeArray<double> none(0);
+    CHECK(none.empty());
 }
