@@ -1,6 +1,6 @@
 #include "renderer/io/input_files.h"
 
-#include "renderer/content_hash.h"
+#include "renderer/file_content_hash.h"
 
 namespace raylab {
 
@@ -46,7 +46,7 @@ void recordInputFile(const std::string& path, const struct stat& st) {
 }
 
 void recordInputContent(const struct stat& st, std::string_view bytes) {
-    const uint64_t hash = contentHash(bytes);  // a pass over the file, outside the lock
+    const uint64_t hash = fileContentHash(bytes);  // a pass over the file, outside the lock
     std::lock_guard<std::mutex> lock(g_logsMutex);
     if (g_current) g_current->addContent(fileKeyOf(st), bytes.size(), hash);
 }

@@ -22,7 +22,7 @@ namespace raylab {
 struct InputFile {
     std::string path;  ///< as it was opened
     FileKey key;
-    /// What readTextFile read: its size and content hash (renderer/content_hash.h);
+    /// What readTextFile read: its size and content hash (renderer/file_content_hash.h);
     /// both 0 for a file recorded by path only.
     uint64_t bytes = 0;
     uint64_t contentHash = 0;
