@@ -8,15 +8,19 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <atomic>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "geometry/validate.h"
+#include "renderer/huge_array.h"
 #include "renderer/huge_pages.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/load_warnings.h"
@@ -92,10 +96,13 @@ double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
 /// position (a UV seam, a second group, file normals) reach a hash map. A
 /// mesh whose positions each make one vertex (a scan, a terrain) never
 /// hashes. The result is the one a single hash map gives: same vertices in
-/// the same order.
+/// the same order. Such a mesh is built by buildInParallel instead, with
+/// the same result.
 class PartBuilder {
 public:
     PartBuilder() : m_part{"", std::make_shared<TriangleMesh>(), {}} {}
+
+    void setPositionCount(size_t positions) { m_positionCount = positions; }
 
     /// Room for what the part can hold at most (untouched pages cost no memory).
     void reserve(size_t positions, size_t triangles) {
@@ -111,7 +118,7 @@ public:
         reserveHugePages(m_part.faceMaterials, triangles);
     }
 
-    uint32_t vertex(const ObjCorner& c, const NormalSource& n, const std::vector<Vec3>& world,
+    uint32_t vertex(const ObjCorner& c, const NormalSource& n, const HugeArray<Vec3>& world,
                     const ObjData& data, const Transform& xf) {
         const VertexKey key{c.v, c.vt, n.kind, n.id};
         if (m_firstVertex.empty()) resizeHugePages(m_firstVertex, m_positionCount, kNone);
@@ -154,6 +161,143 @@ public:
         return index;
     }
 
+    /// Builds the whole part at once, in parallel, when no position makes
+    /// more than one vertex in it (one texture coordinate and one normal
+    /// source per position: a terrain, a scan). Vertex i is then the
+    /// position of the i-th first use, exactly what vertex() gives corner
+    /// by corner, and every array comes out as the serial pass makes it, for
+    /// any thread count. `corners(b, fn)` calls fn(ordinal, corner, normal
+    /// source) for every corner of block b, in order (ordinals grow along
+    /// the serial order); `triangles(b, fn)` calls fn(positions, material)
+    /// for every kept triangle of block b, wound as it is added. Returns
+    /// false, with nothing changed, when some position has two keys.
+    template <class Corners, class Triangles>
+    bool buildInParallel(size_t blockCount, const Corners& corners, const Triangles& triangles,
+                         const HugeArray<Vec3>& world, const ObjData& data,
+                         const Transform& xf) {
+        const size_t positions = m_positionCount;
+        const auto forBlocks = [&](const auto& body) {
+            tbb::parallel_for(tbb::blocked_range<size_t>(0, blockCount, 1),
+                              [&](const tbb::blocked_range<size_t>& r) {
+                                  for (size_t b = r.begin(); b != r.end(); ++b) body(b);
+                              });
+        };
+        // Pass 1: per position its first corner (the smallest ordinal: the
+        // same whichever thread gets there first) and its one key.
+        // Zero is "not seen yet": the arrays start as zero bytes.
+        HugeArray<std::atomic<uint64_t>> first(positions);     // ordinal + 1
+        HugeArray<std::atomic<uint64_t>> normalOf(positions);  // normal source, coded + 1
+        HugeArray<std::atomic<uint32_t>> uvOf(positions);      // vt + 2
+        // The first value a position gets; a second, different one: two keys.
+        const auto claim = [](auto& slot, auto value) {
+            auto had = slot.load(std::memory_order_relaxed);
+            if (had == 0 && slot.compare_exchange_strong(had, value, std::memory_order_relaxed))
+                return true;
+            return had == value;
+        };
+        std::atomic<bool> twoKeys{false}, missingUv{false};
+        forBlocks([&](size_t b) {
+            bool localTwoKeys = false, localMissingUv = false;
+            corners(b, [&](uint64_t ordinal, const ObjCorner& c, const NormalSource& n) {
+                std::atomic<uint64_t>& f = first[c.v];
+                uint64_t seen = f.load(std::memory_order_relaxed);
+                while ((seen == 0 || ordinal + 1 < seen) &&
+                       !f.compare_exchange_weak(seen, ordinal + 1, std::memory_order_relaxed)) {
+                }
+                // The rest of the key in two integers (vt + 2; the normal
+                // source's kind and id, + 1): equal keys, equal numbers.
+                const uint64_t normal = n.kind == NormalSource::File    ? (1ull << 40) + n.id + 1
+                                        : n.kind == NormalSource::Group ? (2ull << 40) + n.id + 1
+                                                                        : 1;
+                localTwoKeys = localTwoKeys || !claim(normalOf[c.v], normal) ||
+                               !claim(uvOf[c.v], uint32_t(c.vt + 2));
+                localMissingUv = localMissingUv || c.vt < 0;
+            });
+            if (localTwoKeys) twoKeys.store(true, std::memory_order_relaxed);
+            if (localMissingUv) missingUv.store(true, std::memory_order_relaxed);
+        });
+        if (twoKeys.load()) return false;
+        normalOf.release();
+
+        // Pass 2: what each block adds, then where its share goes.
+        struct Share {
+            size_t vertices = 0, sums = 0, normals = 0, triangles = 0;
+        };
+        std::vector<Share> share(blockCount + 1);
+        forBlocks([&](size_t b) {
+            Share n;
+            corners(b, [&](uint64_t ordinal, const ObjCorner& c, const NormalSource& src) {
+                if (first[c.v].load(std::memory_order_relaxed) != ordinal + 1) return;
+                ++n.vertices;
+                n.sums += src.kind == NormalSource::Group;
+                n.normals += src.kind != NormalSource::Flat;
+            });
+            triangles(b, [&](const std::array<uint32_t, 3>&, uint32_t) { ++n.triangles; });
+            share[b + 1] = n;
+        });
+        for (size_t b = 0; b < blockCount; ++b) {
+            share[b + 1].vertices += share[b].vertices;
+            share[b + 1].sums += share[b].sums;
+            share[b + 1].normals += share[b].normals;
+            share[b + 1].triangles += share[b].triangles;
+        }
+        const Share total = share[blockCount];
+        // A part's vertices all have normals or none (Flat faces form a part of their own).
+        if (total.normals != 0 && total.normals != total.vertices) return false;
+
+        TriangleMesh& m = mesh();
+        m_allUvs = !missingUv.load();
+        resizeHugePages(m.positions, total.vertices);
+        if (total.normals > 0) resizeHugePages(m.normals, total.vertices);
+        if (!data.colors.empty()) resizeHugePages(m.colors, total.vertices);
+        if (m_allUvs) resizeHugePages(m.uvs, total.vertices);
+        resizeHugePages(m_sumOf, total.vertices, kNone);
+        resizeHugePages(m.triangles, total.triangles);
+        resizeHugePages(m_part.faceMaterials, total.triangles);
+        m_sumCount = uint32_t(total.sums);
+        // Per position used: its vertex (in the memory of uvOf, done with).
+        HugeArray<std::atomic<uint32_t>>& vertexOf = uvOf;
+
+        // Pass 3: the vertices, each made at its first corner.
+        forBlocks([&](size_t b) {
+            size_t index = share[b].vertices, sumIndex = share[b].sums;
+            corners(b, [&](uint64_t ordinal, const ObjCorner& c, const NormalSource& n) {
+                if (first[c.v].load(std::memory_order_relaxed) != ordinal + 1) return;
+                vertexOf[c.v].store(uint32_t(index), std::memory_order_relaxed);
+                m.positions[index] = world[c.v];
+                if (!data.colors.empty()) {
+                    const Vec3f& col = data.colors[c.v];
+                    m.colors[index] = Vec3(col.x, col.y, col.z);
+                }
+                if (m_allUvs) {
+                    const Vec2f& t = data.texcoords[size_t(c.vt)];
+                    m.uvs[index] = Vec2(t.x, t.y);
+                }
+                if (n.kind == NormalSource::File) {
+                    const Vec3f& f = data.normals[n.id];
+                    m.normals[index] = xf.normal(Vec3(f.x, f.y, f.z));
+                } else if (n.kind == NormalSource::Group) {
+                    m_sumOf[index] = uint32_t(sumIndex++);
+                }
+                ++index;
+            });
+        });
+        first.release();
+
+        // Pass 4: the triangles, in order.
+        forBlocks([&](size_t b) {
+            size_t index = share[b].triangles;
+            triangles(b, [&](const std::array<uint32_t, 3>& p, uint32_t material) {
+                m.triangles[index] = {vertexOf[p[0]].load(std::memory_order_relaxed),
+                                      vertexOf[p[1]].load(std::memory_order_relaxed),
+                                      vertexOf[p[2]].load(std::memory_order_relaxed)};
+                m_part.faceMaterials[index] = material;
+                ++index;
+            });
+        });
+        return true;
+    }
+
     /// Adds a triangle (already checked for area) with its material.
     void triangle(const std::array<uint32_t, 3>& t, uint32_t material) {
         mesh().triangles.push_back(t);
@@ -190,58 +334,81 @@ private:
 
     /// Every smoothing sum is the angle-weighted sum of the normals of its
     /// triangles, added in triangle order (corner order within one), then
-    /// normalised; a sum that cancels takes its first triangle's normal. The
-    /// sums are independent: each is added up on its own, in parallel, in
-    /// exactly the order a single pass over the triangles would add it, so
-    /// the normals are the same bits for any thread count.
+    /// normalised; a sum that cancels takes its first triangle's normal.
+    /// What each corner adds (a face normal times the corner's angle: the
+    /// atan2 calls are most of the work) is computed in parallel, block by
+    /// block; the additions run in one serial stage that takes the blocks in
+    /// triangle order, so every sum is added up exactly as a single pass
+    /// adds it: the same bits for any thread count.
     void smoothNormals() {
         TriangleMesh& m = mesh();
         const auto& tris = m.triangles;
-        // Which (triangle, corner) each sum receives, grouped by sum, in order.
-        std::vector<uint32_t> start;
-        resizeHugePages(start, size_t(m_sumCount) + 1, 0u);
-        for (const auto& t : tris)
-            if (m_sumOf[t[0]] != kNone)
-                for (uint32_t v : t) ++start[m_sumOf[v] + 1];
-        for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-        std::vector<uint32_t> incident;
-        resizeHugePages(incident, size_t(start.back()));
-        {
-            std::vector<uint32_t> next;
-            reserveHugePages(next, start.size() - 1);
-            next.assign(start.begin(), start.end() - 1);
-            for (size_t ti = 0; ti < tris.size(); ++ti)
-                if (m_sumOf[tris[ti][0]] != kNone)
-                    for (uint32_t k = 0; k < 3; ++k)
-                        incident[next[m_sumOf[tris[ti][k]]]++] = uint32_t(ti * 3 + k);
-        }
-        std::vector<Vec3> normal;
-        resizeHugePages(normal, size_t(m_sumCount));
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_sumCount, 4096),
-                          [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t sIndex = r.begin(); sIndex != r.end(); ++sIndex) {
-                Vec3 sum{};
-                for (uint32_t j = start[sIndex]; j < start[sIndex + 1]; ++j) {
-                    const auto& t = tris[incident[j] / 3];
-                    const uint32_t k = incident[j] % 3;
+        HugeArray<Vec3> sum(m_sumCount);
+        HugeArray<uint32_t> firstTriangle(m_sumCount);  // + 1; per sum: for a sum that cancels
+
+        constexpr size_t kBlock = 1024;  // triangles: the cut depends only on the mesh
+        const size_t blockCount = (tris.size() + kBlock - 1) / kBlock;
+        // Buffers for the blocks in flight. The last stage is serial and in
+        // order, so block b has left it before block b + kTokens can start.
+        constexpr size_t kTokens = 4;
+        std::vector<std::vector<std::array<Vec3, 3>>> added(kTokens);
+        size_t nextBlock = 0;
+        tbb::parallel_pipeline(
+            kTokens,
+            tbb::make_filter<void, size_t>(tbb::filter_mode::serial_in_order,
+                                           [&](tbb::flow_control& fc) -> size_t {
+                if (nextBlock == blockCount) {
+                    fc.stop();
+                    return 0;
+                }
+                return nextBlock++;
+            }) &
+            tbb::make_filter<size_t, size_t>(tbb::filter_mode::parallel, [&](size_t b) {
+                std::vector<std::array<Vec3, 3>>& out = added[b % kTokens];
+                out.resize(kBlock);
+                const size_t end = std::min(tris.size(), (b + 1) * kBlock);
+                for (size_t ti = b * kBlock; ti < end; ++ti) {
+                    const auto& t = tris[ti];
+                    if (m_sumOf[t[0]] == kNone) continue;
                     const Vec3& p0 = m.positions[t[0]];
                     const Vec3& p1 = m.positions[t[1]];
                     const Vec3& p2 = m.positions[t[2]];
                     const Vec3 n = normalize(cross(p1 - p0, p2 - p0));
-                    const double angle = k == 0   ? cornerAngle(p0, p1, p2)
-                                         : k == 1 ? cornerAngle(p1, p2, p0)
-                                                  : cornerAngle(p2, p0, p1);
-                    sum += n * angle;
+                    auto& a = out[ti - b * kBlock];
+                    a[0] = n * cornerAngle(p0, p1, p2);
+                    a[1] = n * cornerAngle(p1, p2, p0);
+                    a[2] = n * cornerAngle(p2, p0, p1);
                 }
-                const Vec3 n = normalize(sum);
-                normal[sIndex] = isFinite(n) && lengthSquared(n) > 0 ? n
-                                 : start[sIndex] == start[sIndex + 1]
-                                     ? Vec3{}
-                                     : faceNormal(tris[incident[start[sIndex]] / 3]);
+                return b;
+            }) &
+            tbb::make_filter<size_t, void>(tbb::filter_mode::serial_in_order, [&](size_t b) {
+                const std::vector<std::array<Vec3, 3>>& in = added[b % kTokens];
+                const size_t end = std::min(tris.size(), (b + 1) * kBlock);
+                for (size_t ti = b * kBlock; ti < end; ++ti) {
+                    const auto& t = tris[ti];
+                    if (m_sumOf[t[0]] == kNone) continue;
+                    for (size_t k = 0; k < 3; ++k) {
+                        const uint32_t s = m_sumOf[t[k]];
+                        if (firstTriangle[s] == 0) firstTriangle[s] = uint32_t(ti + 1);
+                        sum[s] += in[ti - b * kBlock][k];
+                    }
+                }
+            }));
+
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, sum.size(), 16384),
+                          [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t s = r.begin(); s != r.end(); ++s) {
+                const Vec3 n = normalize(sum[s]);
+                sum[s] = isFinite(n) && lengthSquared(n) > 0 ? n
+                         : firstTriangle[s] == 0             ? Vec3{}
+                                                             : faceNormal(tris[firstTriangle[s] - 1]);
             }
         });
-        for (size_t i = 0; i < m_sumOf.size(); ++i)
-            if (m_sumOf[i] != kNone) m.normals[i] = normal[m_sumOf[i]];
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_sumOf.size(), 16384),
+                          [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i != r.end(); ++i)
+                if (m_sumOf[i] != kNone) m.normals[i] = sum[m_sumOf[i]];
+        });
     }
 
     /// The sum of (position v, group): made on first use.
@@ -285,12 +452,11 @@ int lineOfVertex(const std::string& text, size_t index) {
 
 /// The positions with the transform applied; beyond float they could not be
 /// traced (and their areas would overflow into "zero-area" faces).
-std::vector<Vec3> worldPositions(const ObjData& data, const Transform& xf,
-                                 const std::string& path) {
-    std::vector<Vec3> world;
-    resizeHugePages(world, data.positions.size());
+HugeArray<Vec3> worldPositions(const ObjData& data, const Transform& xf,
+                               const std::string& path) {
+    HugeArray<Vec3> world(data.positions.size());
     const double limit = double(std::numeric_limits<float>::max());
-    std::vector<char> beyond(data.positions.size());
+    HugeArray<char> beyond(data.positions.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, world.size(), 16384),
                       [&](const tbb::blocked_range<size_t>& r) {
         for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -312,37 +478,52 @@ std::vector<Vec3> worldPositions(const ObjData& data, const Transform& xf,
 class MeshBuilder {
 public:
     MeshBuilder(const ObjData& data, const ObjMaterials& mats, const ObjLoadOptions& options,
-                std::vector<Vec3> world, LoadWarnings& warn)
+                HugeArray<Vec3> world, LoadWarnings& warn)
         : m_data(data), m_mats(mats), m_options(options), m_world(std::move(world)),
           m_warn(warn) {}
 
     /// Plans every face in parallel (triangulation, self-crossing check,
-    /// which triangles have area), then builds the parts in one pass in face
-    /// order (shared vertices, materials, warnings), then the normals.
+    /// which triangles have area, part and material), reports the faces'
+    /// warnings in face order, then builds each part: in parallel when
+    /// every position makes one vertex in it, else in one pass in face
+    /// order (shared vertices through PartBuilder::vertex); the normals follow.
     void build() {
         // Each face's triangles go at a fixed place: a face of n corners has
         // at most n - 2 (fewer when collinear corners are skipped).
-        std::vector<size_t> slot;
-        resizeHugePages(slot, m_data.faces.size() + 1, size_t(0));
+        m_slot = HugeArray<size_t>(m_data.faces.size() + 1);
         for (size_t i = 0; i < m_data.faces.size(); ++i) {
             const uint32_t n = m_data.faces[i].cornerCount;
-            slot[i + 1] = slot[i] + (n > 2 ? n - 2 : 0);
+            m_slot[i + 1] = m_slot[i] + (n > 2 ? n - 2 : 0);
         }
-        resizeHugePages(m_plans, m_data.faces.size());
-        resizeHugePages(m_planned, slot.back());
+        const size_t slots = m_slot[m_data.faces.size()];
+        m_plans = HugeArray<FacePlan>(m_data.faces.size());
+        m_planned = HugeArray<PlannedTriangle>(slots);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, m_data.faces.size(), 1024),
                           [&](const tbb::blocked_range<size_t>& r) {
             std::vector<Vec3> corners;
             std::vector<std::array<uint32_t, 3>> triangles;
             for (size_t i = r.begin(); i != r.end(); ++i)
-                plan(m_data.faces[i], corners, triangles, m_plans[i], m_planned.data() + slot[i]);
+                plan(m_data.faces[i], corners, triangles, m_plans[i], m_planned.data() + m_slot[i]);
         });
-        m_smooth.reserve(m_data.positions.size(), slot.back());
-        m_flat.reserve(m_data.positions.size(), slot.back());
-        for (size_t i = 0; i < m_data.faces.size(); ++i)
-            face(m_data.faces[i], m_plans[i], m_planned.data() + slot[i]);
-        std::vector<FacePlan>().swap(m_plans);
-        std::vector<PlannedTriangle>().swap(m_planned);
+        for (size_t i = 0; i < m_data.faces.size(); ++i) report(m_data.faces[i], m_plans[i]);
+        for (const bool flat : {false, true}) {
+            PartBuilder& part = flat ? m_flat : m_smooth;
+            if (!(flat ? m_flatFaces : m_smoothFaces)) continue;  // stays empty
+            part.setPositionCount(m_data.positions.size());
+            const size_t blocks = (m_data.faces.size() + kFaceBlock - 1) / kFaceBlock;
+            const auto corners = [&](size_t b, const auto& fn) { forEachCorner(b, flat, fn); };
+            const auto triangles = [&](size_t b, const auto& fn) { forEachTriangle(b, flat, fn); };
+            if (part.buildInParallel(blocks, corners, triangles, m_world, m_data,
+                                     m_options.transform))
+                continue;
+            part.reserve(m_data.positions.size(), slots);
+            for (size_t i = 0; i < m_data.faces.size(); ++i)
+                if (m_plans[i].kind == FacePlan::Triangles && m_plans[i].flat == flat)
+                    face(m_data.faces[i], m_plans[i], m_planned.data() + m_slot[i], part);
+        }
+        m_plans.release();
+        m_planned.release();
+        m_slot.release();
     }
 
     bool usesDefaultMaterial() const { return m_needDefault; }
@@ -377,19 +558,23 @@ private:
         return {NormalSource::Group, group};
     }
 
-    uint32_t material(const ObjFace& f) {
+    uint32_t material(const ObjFace& f) const {
         const uint32_t m =
             f.material == kNoObjMaterial ? kNoObjMaterial : m_mats.byName[f.material];
         if (m != kNoObjMaterial) return m;
-        m_needDefault = true;
-        return uint32_t(m_mats.materials.size());  // the default, appended after the MTL ones
+        return defaultMaterial();
     }
+    /// The default material, appended after the MTL ones.
+    uint32_t defaultMaterial() const { return uint32_t(m_mats.materials.size()); }
 
     /// What the parallel stage decides about a face.
     struct FacePlan {
         enum Kind : uint8_t { FewCorners, NoArea, Triangles } kind = FewCorners;
         bool crossesItself = false;
+        bool flat = false;            ///< goes to the flat part (no normal source)
         uint32_t triangleCount = 0;
+        uint32_t kept = 0;            ///< triangles with area
+        uint32_t material = 0;
     };
     /// A triangle of a face's triangulation: corner numbers within the face,
     /// and whether it has area (wound as it will be, see face()).
@@ -421,6 +606,8 @@ private:
         }
         out.kind = FacePlan::Triangles;
         out.crossesItself = f.cornerCount > 3 && crossesItself(corners, triangles);
+        out.flat = normalSource(f).kind == NormalSource::Flat;
+        out.material = material(f);
         out.triangleCount = uint32_t(triangles.size());
         const bool mirrored = m_options.transform.flipsHandedness();
         for (size_t j = 0; j < triangles.size(); ++j) {
@@ -433,11 +620,12 @@ private:
             const Vec3 area = cross(p1 - p0, p2 - p0);
             // Zero-area triangles have no normal; Embree would never report them.
             planned[j] = {triangles[j], lengthSquared(area) > 0 && isFinite(area)};
+            out.kept += planned[j].hasArea;
         }
     }
 
-    /// Adds a planned face to its part, with the warnings a face can give, in file order.
-    void face(const ObjFace& f, const FacePlan& plan, const PlannedTriangle* planned) {
+    /// The warnings a face gives, and whether it needs the default material.
+    void report(const ObjFace& f, const FacePlan& plan) {
         if (plan.kind == FacePlan::FewCorners) {
             m_warn.add("face with fewer than 3 corners dropped", f.line, "", "dropped faces");
             return;
@@ -451,11 +639,62 @@ private:
         if (plan.crossesItself)
             m_warn.add("face crosses itself: its triangles cover more than its area", f.line, "",
                        "self-intersecting faces");
+        if (plan.material == defaultMaterial()) m_needDefault = true;
+        (plan.flat ? m_flatFaces : m_smoothFaces) = true;
+        if (plan.kept == 0) m_warn.add("face has zero area; dropped", f.line, "", "dropped faces");
+    }
 
+    /// Faces per block of the parallel part build (the cut depends only on the file).
+    static constexpr size_t kFaceBlock = 4096;
+
+    /// fn(ordinal, corner, normal source) for every corner that makes a
+    /// vertex in the part (`flat` or not), of the faces of block b, in the
+    /// order face() visits them; the ordinal grows along that order.
+    template <class Fn>
+    void forEachCorner(size_t b, bool flat, const Fn& fn) const {
+        const size_t end = std::min(m_data.faces.size(), (b + 1) * kFaceBlock);
+        for (size_t i = b * kFaceBlock; i < end; ++i) {
+            const FacePlan& plan = m_plans[i];
+            if (plan.kind != FacePlan::Triangles || plan.flat != flat) continue;
+            const ObjFace& f = m_data.faces[i];
+            const NormalSource normals = normalSource(f);
+            for (uint32_t j = 0; j < plan.triangleCount; ++j) {
+                const PlannedTriangle& t = m_planned[m_slot[i] + j];
+                for (size_t k = 0; k < 3; ++k) {
+                    const ObjCorner c = corner(f, t.corner[k]);
+                    NormalSource n = normals;
+                    if (n.kind == NormalSource::File) n.id = uint64_t(c.vn);
+                    fn(uint64_t(m_slot[i] + j) * 3 + k, c, n);
+                }
+            }
+        }
+    }
+
+    /// fn(positions, material) for every triangle with area of the part's
+    /// faces in block b, in order, wound as face() adds it.
+    template <class Fn>
+    void forEachTriangle(size_t b, bool flat, const Fn& fn) const {
+        const bool mirrored = m_options.transform.flipsHandedness();
+        const size_t end = std::min(m_data.faces.size(), (b + 1) * kFaceBlock);
+        for (size_t i = b * kFaceBlock; i < end; ++i) {
+            const FacePlan& plan = m_plans[i];
+            if (plan.kind != FacePlan::Triangles || plan.flat != flat) continue;
+            const uint32_t first = m_data.faces[i].firstCorner;
+            for (uint32_t j = 0; j < plan.triangleCount; ++j) {
+                const PlannedTriangle& t = m_planned[m_slot[i] + j];
+                if (!t.hasArea) continue;
+                std::array<uint32_t, 3> p;
+                for (size_t k = 0; k < 3; ++k) p[k] = m_data.cornerV[first + t.corner[k]];
+                if (mirrored) std::swap(p[1], p[2]);
+                fn(p, plan.material);
+            }
+        }
+    }
+
+    /// Adds a planned face (of kind Triangles) to `part`, one corner at a time.
+    void face(const ObjFace& f, const FacePlan& plan, const PlannedTriangle* planned,
+              PartBuilder& part) {
         const NormalSource normals = normalSource(f);
-        PartBuilder& part = normals.kind == NormalSource::Flat ? m_flat : m_smooth;
-        const uint32_t mat = material(f);
-        size_t kept = 0;
         for (uint32_t j = 0; j < plan.triangleCount; ++j) {
             std::array<uint32_t, 3> tri;
             for (size_t k = 0; k < 3; ++k) {
@@ -468,11 +707,8 @@ private:
             // A mirroring transform reverses the winding; swap to keep the front side.
             if (m_options.transform.flipsHandedness()) std::swap(tri[1], tri[2]);
             if (!planned[j].hasArea) continue;
-            part.triangle(tri, mat);
-            ++kept;
+            part.triangle(tri, plan.material);
         }
-        if (kept == 0)
-            m_warn.add("face has zero area; dropped", f.line, "", "dropped faces");
     }
 
     /// A face whose triangles cover more than its own area crosses itself (or
@@ -491,12 +727,15 @@ private:
     const ObjData& m_data;
     const ObjMaterials& m_mats;
     const ObjLoadOptions& m_options;
-    std::vector<Vec3> m_world;
+    HugeArray<Vec3> m_world;
     LoadWarnings& m_warn;
     PartBuilder m_smooth, m_flat;
-    std::vector<FacePlan> m_plans;            ///< per face, while building
-    std::vector<PlannedTriangle> m_planned;   ///< per face, at its slot
+    // While building (large: huge-page arrays, see huge_pages.h):
+    HugeArray<FacePlan> m_plans;            ///< per face
+    HugeArray<PlannedTriangle> m_planned;   ///< per face, at its slot
+    HugeArray<size_t> m_slot;  ///< per face: where its planned triangles start
     bool m_needDefault = false;
+    bool m_smoothFaces = false, m_flatFaces = false;  ///< some face goes to the part
 };
 
 }  // namespace
