@@ -2,9 +2,9 @@
 // Bare replay of recorded rays through Embree: rtcIntersect1 / rtcOccluded1
 // on an EmbreeAccelerator's RTCScene, with no shading, no Hit decoding and no
 // virtual dispatch. The one entry point into the Embree adaptor's internals
-// that tools need (`raylab bench limit`). The rays are converted once, up front, exactly as
-// EmbreeAccelerator converts them (float, relative to its origin, mask all
-// ones), and every query passes the same extended context (the exact double
+// that tools need (`raylab bench limit`). Each ray is converted exactly as
+// EmbreeAccelerator converts it (float, relative to its origin, mask all
+// ones), at its query (any caller must), and every query passes the same extended context (the exact double
 // ray for the analytic shapes), so the work inside Embree is the renderer's.
 // Embree types stay in the .cpp: this header is safe to include anywhere.
 
