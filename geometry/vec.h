@@ -62,28 +62,41 @@ bool squaredLengthIsSafe(T l2) {
     return l2 >= std::numeric_limits<T>::min() && l2 <= std::numeric_limits<T>::max();
 }
 
-/// |v|, also for components near the ends of the range (1e±300 in double):
-/// there the vector is scaled by its largest component before squaring.
+/// length() where squaring overflowed or underflowed (components near the
+/// ends of the range, 1e±300 in double): the vector is scaled by its largest
+/// component before squaring.
 template <class T>
-T length(const Vec3T<T>& v) {
-    const T l2 = dot(v, v);
-    if (squaredLengthIsSafe(l2)) return std::sqrt(l2);
+[[gnu::noinline]] T lengthScaled(const Vec3T<T>& v, T l2) {
     const T m = maxComponent(abs(v));
     if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return std::sqrt(l2);  // 0, Inf, NaN
     const Vec3T<T> s = v / m;
     return m * std::sqrt(dot(s, s));
 }
 
-/// Unit vector along v; the zero vector stays zero (never NaN). Scaled like
-/// length() where squaring would overflow or underflow.
+/// |v|, also for components near the ends of the range.
 template <class T>
-Vec3T<T> normalize(const Vec3T<T>& v) {
+inline T length(const Vec3T<T>& v) {
     const T l2 = dot(v, v);
-    if (squaredLengthIsSafe(l2)) return v / std::sqrt(l2);
+    if (squaredLengthIsSafe(l2)) return std::sqrt(l2);
+    return lengthScaled(v, l2);  // rare: kept out of line so the common case inlines
+}
+
+/// normalize() where squaring overflowed or underflowed.
+template <class T>
+[[gnu::noinline]] Vec3T<T> normalizeScaled(const Vec3T<T>& v) {
     const T m = maxComponent(abs(v));
     if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return Vec3T<T>{};
     const Vec3T<T> s = v / m;
     return s / std::sqrt(dot(s, s));
+}
+
+/// Unit vector along v; the zero vector stays zero (never NaN). Scaled like
+/// length() where squaring would overflow or underflow.
+template <class T>
+inline Vec3T<T> normalize(const Vec3T<T>& v) {
+    const T l2 = dot(v, v);
+    if (squaredLengthIsSafe(l2)) return v / std::sqrt(l2);
+    return normalizeScaled(v);  // rare: kept out of line so the common case inlines
 }
 
 template <class T>
