@@ -110,11 +110,15 @@ Camera::DifferentialSteps Camera::differentialSteps(int width, int height, doubl
 }
 
 RayDifferential Camera::differential(const Ray& ray, const DifferentialSteps& steps) const {
+    return differential(ray, normalize(ray.d), steps);
+}
+
+RayDifferential Camera::differential(const Ray&, const Vec3& d,
+                                     const DifferentialSteps& steps) const {
     RayDifferential rd;
     if (m_projection == Projection::Perspective) {
         // d' has w-component -1, so |d'| = 1 / (-d·w); the unit direction
         // d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|.
-        const Vec3 d = normalize(ray.d);
         const double along = -dot(d, m_frame.w);
         const double len = 1.0 / along;  // |d'|
         rd.dddx = (steps.dx - d * dot(d, steps.dx)) / len;

@@ -63,6 +63,10 @@ public:
     /// differential(ray, width, height, spacing) with the steps computed
     /// before, bit for bit.
     RayDifferential differential(const Ray& ray, const DifferentialSteps& steps) const;
+    /// The same with the ray's unit direction normalize(ray.d) known (the
+    /// integrator has it), bit for bit.
+    RayDifferential differential(const Ray& ray, const Vec3& unitDir,
+                                 const DifferentialSteps& steps) const;
     /// The ray cone of a sample `spacing` pixels wide (RTG ch. 20: width 0
     /// and the pixel's spread angle, or an orthographic pixel's width).
     RayCone cone(int width, int height, double spacing) const;

@@ -12,16 +12,21 @@ TextureShading::TextureShading(const Scene& scene, const RenderOptions& options)
     // A footprint per sample: stratified samples are 1/√spp pixels apart.
     if (options.spp > 1) m_spacing = 1.0 / std::sqrt(double(options.spp));
     m_cameraSteps = scene.camera.differentialSteps(options.width, options.height, m_spacing);
+    m_cameraCone = scene.camera.cone(options.width, options.height, m_spacing);
 }
 
 RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
+    if (!m_footprints) return RayFootprint{};
+    return cameraFootprint(cameraRay, normalize(cameraRay.d));
+}
+
+RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay, const Vec3& unitDir) const {
     RayFootprint fp;
     if (!m_footprints) return fp;
-    const Camera& camera = m_scene.camera;
     if (m_options.textures.footprint == TextureFootprint::Differentials)
-        fp.differential = camera.differential(cameraRay, m_cameraSteps);
+        fp.differential = m_scene.camera.differential(cameraRay, unitDir, m_cameraSteps);
     else
-        fp.cone = camera.cone(m_options.width, m_options.height, m_spacing);
+        fp.cone = m_cameraCone;
     return fp;
 }
 

@@ -34,6 +34,9 @@ public:
 
     /// The footprint a camera ray starts with (one sample: 1/√spp pixels).
     RayFootprint cameraFootprint(const Ray& cameraRay) const;
+    /// The same with normalize(cameraRay.d) known (the integrator computes
+    /// it at the camera ray's hit; a ray that misses needs no footprint).
+    RayFootprint cameraFootprint(const Ray& cameraRay, const Vec3& unitDir) const;
     /// The footprint at a hit at parameter t of `ray`; `dir` is
     /// normalize(ray.d) (the integrator has it); `si` has
     /// SurfaceDetail::Complete; `entering` as in the integrator.
@@ -55,6 +58,7 @@ private:
     bool m_footprints;     ///< the filter reads footprints (trilinear, anisotropic)
     double m_spacing = 1;  ///< sample spacing in pixels
     Camera::DifferentialSteps m_cameraSteps;  ///< the camera's per-image part of its differentials
+    RayCone m_cameraCone;  ///< every camera ray's cone (the same for the whole image)
 };
 
 }  // namespace raylab

@@ -4,6 +4,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "geometry/spawn.h"
@@ -72,9 +73,9 @@ bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
 template <unsigned E>
 Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& state,
                                FirstHit* first) const {
-    Footprint<E> footprint{};
-    if constexpr (textured(E)) footprint = m_textures->cameraFootprint(cameraRay);
-    return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, footprint);
+    // No footprint yet: trace computes the camera ray's at its hit (a miss
+    // needs none) from the unit direction it has there.
+    return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, nullptr);
 }
 
 template <unsigned E>
@@ -140,7 +141,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
 template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
                                double weight, TraceState& state, FirstHit* first,
-                               const Footprint<E>& footprint) const {
+                               const Footprint<E>* carried) const {
     state.counters.count(type, depth);
     ++state.spent.traced;
     const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
@@ -155,12 +156,17 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     const bool entering = si.frontFace;
     const Vec3 dir = normalize(ray.d);
     const SurfaceOptics* optics = &m_scene.materials[si.material];
-    [[maybe_unused]] HitFootprintOf<E> hitFootprint{};
+    [[maybe_unused]] HitFootprintOf<E> hitFootprint;
     [[maybe_unused]] SurfaceOptics texturedOptics;
+    // The footprint the ray carries; a camera ray's (carried == nullptr) is
+    // computed here, where normalize(ray.d) is known (std::optional: no
+    // zeroed record on the other rays).
+    [[maybe_unused]] std::optional<Footprint<E>> cameraFootprint;
     if constexpr (textured(E)) {
+        if (!carried) carried = &cameraFootprint.emplace(m_textures->cameraFootprint(ray, dir));
         // Untextured materials pass the footprint on too (a plain mirror
         // showing a textured object).
-        hitFootprint = m_textures->atHit(footprint, ray, dir, si.t, si, entering);
+        hitFootprint = m_textures->atHit(*carried, ray, dir, si.t, si, entering);
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any()) {
             texturedOptics = m_textures->shade(material, si, hitFootprint);
@@ -205,10 +211,10 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                         const SpawnedRay r = spawn(*t);
                         Footprint<E> next{};
                         if constexpr (textured(E))
-                            next = m_textures->refracted(footprint, hitFootprint, dir, n, *t,
+                            next = m_textures->refracted(*carried, hitFootprint, dir, n, *t,
                                                          etaI / etaT);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  state, nullptr, next);
+                                                  state, nullptr, &next);
                     }
                 } else {
                     reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
@@ -224,9 +230,9 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const SpawnedRay s = spawn(r);
                 Footprint<E> next{};
                 if constexpr (textured(E))
-                    next = m_textures->reflected(footprint, hitFootprint, dir, n);
+                    next = m_textures->reflected(*carried, hitFootprint, dir, n);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   state, nullptr, next);
+                                                   state, nullptr, &next);
             }
         }
     }

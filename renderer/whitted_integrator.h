@@ -76,7 +76,7 @@ private:
     Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first) const;
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                TraceState& state, FirstHit* first, const Footprint<E>& footprint) const;
+                TraceState& state, FirstHit* first, const Footprint<E>* carried) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,

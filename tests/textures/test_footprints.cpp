@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "geometry/primitives.h"
 #include "renderer/accel/accelerator.h"
@@ -129,6 +130,42 @@ TEST_CASE("differentials off a sphere: transfer, reflection and refraction vs th
         checkClose(dpdx2, (exitPoint(xp).first - exitPoint(xm).first) * k, 1e-4);
         checkClose(dpdy2, (exitPoint(yp).first - exitPoint(ym).first) * k, 1e-4);
         (void)pc;
+    }
+}
+
+TEST_CASE("camera footprint from the integrator's unit direction: the ray's own, bit for bit") {
+    // The integrator computes a camera ray's footprint at its hit from the
+    // normalize(ray.d) it has there; that must be what the ray alone gives.
+    for (const bool ortho : {false, true}) {
+        Scene s;
+        s.camera = ortho ? Camera::orthographic({0, 1, 5}, {0.1, -0.2, -1}, {0, 1, 0}, 3.0)
+                         : Camera::perspective({0, 1, 5}, {0.3, 0, 0}, {0, 1, 0}, 35);
+        addTexturedMaterial(s, Texture::fromImage(patternImage(8, 8), "p"));
+        for (TextureFootprint fp : {TextureFootprint::Cones, TextureFootprint::Differentials}) {
+            for (const int spp : {1, 9}) {
+                const RenderOptions opt = textureOptions(s, kW, kH, TextureFilter::Trilinear, fp, spp);
+                const TextureShading shading(s, opt);
+                const double spacing = spp > 1 ? 1.0 / std::sqrt(double(spp)) : 1.0;
+                const Camera::DifferentialSteps steps = s.camera.differentialSteps(kW, kH, spacing);
+                for (double py = 0.25; py < kH; py += 7.5) {
+                    for (double px = 0.5; px < kW; px += 9.25) {
+                        const Ray r = s.camera.generateRay(px, py, kW, kH);
+                        const RayFootprint a = shading.cameraFootprint(r);
+                        const RayFootprint b = shading.cameraFootprint(r, normalize(r.d));
+                        CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+                        const RayDifferential da = s.camera.differential(r, steps);
+                        const RayDifferential db = s.camera.differential(r, normalize(r.d), steps);
+                        CHECK(std::memcmp(&da, &db, sizeof da) == 0);
+                        if (fp == TextureFootprint::Cones) {
+                            const RayCone c = s.camera.cone(kW, kH, spacing);
+                            CHECK(std::memcmp(&b.cone, &c, sizeof c) == 0);
+                        } else {
+                            CHECK(std::memcmp(&b.differential, &da, sizeof da) == 0);
+                        }
+                    }
+                }
+            }
+        }
     }
 }
 
