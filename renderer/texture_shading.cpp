@@ -31,7 +31,7 @@ RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay, const Vec3& u
 }
 
 HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir,
-                                   double t, const SurfaceInteraction& si, bool entering) const {
+                                   double t, const SurfaceInteraction& si) const {
     HitFootprint hf;
     hf.coords.uv = si.uv;
     if (!m_footprints) return hf;
@@ -47,15 +47,23 @@ HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, const
     } else {
         hf.coneWidth = fp.cone.widthAt(t * len);
         coneFootprint(hf.coneWidth, d, si.ng, si.dpdu, hf.dpdx, hf.dpdy);
-        const double k = meanCurvature(si.dpdu, si.dpdv, si.dndu, si.dndv);
-        hf.curvature = entering ? k : -k;
     }
     TextureCoords& tc = hf.coords;
     surfaceParameterChanges(si.dpdu, si.dpdv, hf.dpdx, hf.dpdy, tc.duvdx, tc.duvdy);
-    const double sign = entering ? 1.0 : -1.0;
-    hf.dndx = (si.dndu * tc.duvdx.x + si.dndv * tc.duvdx.y) * sign;
-    hf.dndy = (si.dndu * tc.duvdy.x + si.dndv * tc.duvdy.y) * sign;
     return hf;
+}
+
+void TextureShading::normalChange(const HitFootprint& hf, const SurfaceInteraction& si,
+                                  bool entering, Vec3& dndx, Vec3& dndy) {
+    const TextureCoords& tc = hf.coords;
+    const double sign = entering ? 1.0 : -1.0;
+    dndx = (si.dndu * tc.duvdx.x + si.dndv * tc.duvdx.y) * sign;
+    dndy = (si.dndu * tc.duvdy.x + si.dndv * tc.duvdy.y) * sign;
+}
+
+double TextureShading::curvature(const SurfaceInteraction& si, bool entering) {
+    const double k = meanCurvature(si.dpdu, si.dpdv, si.dndu, si.dndv);
+    return entering ? k : -k;
 }
 
 SurfaceOptics TextureShading::shade(const Material& m, SurfaceInteraction& si,
@@ -71,27 +79,34 @@ SurfaceOptics TextureShading::shade(const Material& m, SurfaceInteraction& si,
 }
 
 RayFootprint TextureShading::reflected(const RayFootprint& fp, const HitFootprint& hf,
+                                       const SurfaceInteraction& si, bool entering,
                                        const Vec3& d, const Vec3& n) const {
     if (!m_footprints) return fp;
     RayFootprint out;
-    if (m_options.textures.footprint == TextureFootprint::Differentials)
-        out.differential =
-            reflectDifferential(fp.differential, d, n, hf.dpdx, hf.dpdy, hf.dndx, hf.dndy);
-    else
-        out.cone = reflectCone(fp.cone, hf.coneWidth, hf.curvature);
+    if (m_options.textures.footprint == TextureFootprint::Differentials) {
+        Vec3 dndx, dndy;
+        normalChange(hf, si, entering, dndx, dndy);
+        out.differential = reflectDifferential(fp.differential, d, n, hf.dpdx, hf.dpdy, dndx, dndy);
+    } else {
+        out.cone = reflectCone(fp.cone, hf.coneWidth, curvature(si, entering));
+    }
     return out;
 }
 
 RayFootprint TextureShading::refracted(const RayFootprint& fp, const HitFootprint& hf,
+                                       const SurfaceInteraction& si, bool entering,
                                        const Vec3& d, const Vec3& n, const Vec3& out,
                                        double eta) const {
     if (!m_footprints) return fp;
     RayFootprint r;
-    if (m_options.textures.footprint == TextureFootprint::Differentials)
+    if (m_options.textures.footprint == TextureFootprint::Differentials) {
+        Vec3 dndx, dndy;
+        normalChange(hf, si, entering, dndx, dndy);
         r.differential = refractDifferential(fp.differential, d, n, out, eta, hf.dpdx, hf.dpdy,
-                                             hf.dndx, hf.dndy);
-    else
-        r.cone = refractCone(fp.cone, hf.coneWidth, hf.curvature, eta);
+                                             dndx, dndy);
+    } else {
+        r.cone = refractCone(fp.cone, hf.coneWidth, curvature(si, entering), eta);
+    }
     return r;
 }
 

@@ -23,9 +23,7 @@ struct RayFootprint {
 struct HitFootprint {
     TextureCoords coords;   ///< uv and its change per sample
     Vec3 dpdx, dpdy;        ///< change of the hit point per sample
-    Vec3 dndx, dndy;        ///< change of the arriving-side shading normal
     double coneWidth = 0;   ///< cones: signed width at the hit
-    double curvature = 0;   ///< cones: mean curvature, > 0 bulging towards the ray
 };
 
 class TextureShading {
@@ -39,18 +37,27 @@ public:
     RayFootprint cameraFootprint(const Ray& cameraRay, const Vec3& unitDir) const;
     /// The footprint at a hit at parameter t of `ray`; `dir` is
     /// normalize(ray.d) (the integrator has it); `si` has
-    /// SurfaceDetail::Complete; `entering` as in the integrator.
+    /// SurfaceDetail::Complete.
     HitFootprint atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir, double t,
-                       const SurfaceInteraction& si, bool entering) const;
+                       const SurfaceInteraction& si) const;
     /// The material's values at the hit; bends si.ns by its bump or normal map.
     SurfaceOptics shade(const Material& m, SurfaceInteraction& si, const HitFootprint& hf) const;
     /// Footprints of the mirror and refracted rays leaving the hit: d the
     /// unit incoming direction, n the arriving-side shading normal, out the
-    /// new unit direction, eta = etaI / etaT.
-    RayFootprint reflected(const RayFootprint& fp, const HitFootprint& hf, const Vec3& d,
+    /// new unit direction, eta = etaI / etaT; si as for atHit, `entering` as in the integrator.
+    /// The change of the normal (differentials) or the curvature (cones) is
+    /// computed here, only for hits that spawn such a ray.
+    RayFootprint reflected(const RayFootprint& fp, const HitFootprint& hf,
+                           const SurfaceInteraction& si, bool entering, const Vec3& d,
                            const Vec3& n) const;
-    RayFootprint refracted(const RayFootprint& fp, const HitFootprint& hf, const Vec3& d,
+    RayFootprint refracted(const RayFootprint& fp, const HitFootprint& hf,
+                           const SurfaceInteraction& si, bool entering, const Vec3& d,
                            const Vec3& n, const Vec3& out, double eta) const;
+    /// The change of the arriving-side shading normal per sample at the hit.
+    static void normalChange(const HitFootprint& hf, const SurfaceInteraction& si, bool entering,
+                             Vec3& dndx, Vec3& dndy);
+    /// Cones: the mean curvature at the hit, > 0 bulging towards the ray.
+    static double curvature(const SurfaceInteraction& si, bool entering);
 
 private:
     const Scene& m_scene;

@@ -166,7 +166,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
         if (!carried) carried = &cameraFootprint.emplace(m_textures->cameraFootprint(ray, dir));
         // Untextured materials pass the footprint on too (a plain mirror
         // showing a textured object).
-        hitFootprint = m_textures->atHit(*carried, ray, dir, si.t, si, entering);
+        hitFootprint = m_textures->atHit(*carried, ray, dir, si.t, si);
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any()) {
             texturedOptics = m_textures->shade(material, si, hitFootprint);
@@ -211,7 +211,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                         const SpawnedRay r = spawn(*t);
                         Footprint<E> next{};
                         if constexpr (textured(E))
-                            next = m_textures->refracted(*carried, hitFootprint, dir, n, *t,
+                            next = m_textures->refracted(*carried, hitFootprint, si, entering, dir, n, *t,
                                                          etaI / etaT);
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
                                                   state, nullptr, &next);
@@ -230,7 +230,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 const SpawnedRay s = spawn(r);
                 Footprint<E> next{};
                 if constexpr (textured(E))
-                    next = m_textures->reflected(*carried, hitFootprint, dir, n);
+                    next = m_textures->reflected(*carried, hitFootprint, si, entering, dir, n);
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
                                                    state, nullptr, &next);
             }

@@ -169,6 +169,65 @@ TEST_CASE("camera footprint from the integrator's unit direction: the ray's own,
     }
 }
 
+TEST_CASE("reflected and refracted footprints: the normal's change computed at the spawn equals the eager one") {
+    // The normal's change (differentials) and the curvature (cones) are
+    // computed only when a mirror or refracted ray leaves the hit; they must
+    // be what computing them at every hit (as atHit did before) gives, bit for bit.
+    Scene s;
+    s.camera = Camera::perspective({0.3, 0.4, 4}, {0, 0, 0}, {0, 1, 0}, 40);
+    const uint32_t mat = addTexturedMaterial(s, Texture::fromImage(patternImage(8, 8), "p"));
+    addObject(s, makeSphere({0, 0, 0}, 1), mat, "ball");
+    for (TextureFootprint fp : {TextureFootprint::Cones, TextureFootprint::Differentials}) {
+        const RenderOptions opt = textureOptions(s, kW, kH, TextureFilter::Trilinear, fp);
+        auto accel = makeAccelerator("naive", s, opt.accelOptions);
+        const TextureShading shading(s, opt);
+        int hits = 0;
+        for (double py = 0.5; py < kH; py += 5.5) {
+            for (double px = 0.5; px < kW; px += 6.5) {
+                const Ray r = s.camera.generateRay(px, py, kW, kH);
+                const auto hit = accel->intersect(r, 0, 1e30);
+                if (!hit) continue;
+                ++hits;
+                const SurfaceInteraction si = s.surfaceAt(r, *hit, {}, SurfaceDetail::Complete);
+                const Vec3 d = normalize(r.d);
+                const RayFootprint in = shading.cameraFootprint(r);
+                const HitFootprint hf = shading.atHit(in, r, d, hit->t, si);
+                for (const bool entering : {true, false}) {
+                    const Vec3 n = entering ? si.ns : -si.ns;
+                    const double sign = entering ? 1.0 : -1.0;
+                    const Vec2 dx = hf.coords.duvdx, dy = hf.coords.duvdy;
+                    const Vec3 dndx = (si.dndu * dx.x + si.dndv * dx.y) * sign;
+                    const Vec3 dndy = (si.dndu * dy.x + si.dndv * dy.y) * sign;
+                    const double k = meanCurvature(si.dpdu, si.dpdv, si.dndu, si.dndv);
+                    const double kappa = entering ? k : -k;
+                    const RayFootprint refl = shading.reflected(in, hf, si, entering, d, n);
+                    const auto t = refract(d, n, entering ? 1.0 : 1.5, entering ? 1.5 : 1.0);
+                    if (fp == TextureFootprint::Differentials) {
+                        const RayDifferential e =
+                            reflectDifferential(in.differential, d, n, hf.dpdx, hf.dpdy, dndx, dndy);
+                        CHECK(std::memcmp(&refl.differential, &e, sizeof e) == 0);
+                    } else {
+                        const RayCone e = reflectCone(in.cone, hf.coneWidth, kappa);
+                        CHECK(std::memcmp(&refl.cone, &e, sizeof e) == 0);
+                    }
+                    if (!t) continue;
+                    const double eta = entering ? 1.0 / 1.5 : 1.5;
+                    const RayFootprint refr = shading.refracted(in, hf, si, entering, d, n, *t, eta);
+                    if (fp == TextureFootprint::Differentials) {
+                        const RayDifferential e = refractDifferential(in.differential, d, n, *t, eta,
+                                                                      hf.dpdx, hf.dpdy, dndx, dndy);
+                        CHECK(std::memcmp(&refr.differential, &e, sizeof e) == 0);
+                    } else {
+                        const RayCone e = refractCone(in.cone, hf.coneWidth, kappa, eta);
+                        CHECK(std::memcmp(&refr.cone, &e, sizeof e) == 0);
+                    }
+                }
+            }
+        }
+        CHECK(hits > 20);
+    }
+}
+
 TEST_CASE("MIP level on a fronto-parallel quad: log2 of texels per pixel, cones and differentials") {
     // A square of side S at distance D facing the camera, uv over [0,1]², an
     // image of T texels a side: one pixel spans 2 D tan(fov/2) / H world units,
@@ -194,7 +253,7 @@ TEST_CASE("MIP level on a fronto-parallel quad: log2 of texels per pixel, cones 
             const auto hit = accel->intersect(r, 0, 1e30);
             REQUIRE(hit);
             const SurfaceInteraction si = s.surfaceAt(r, *hit, {}, SurfaceDetail::Complete);
-            const HitFootprint hf = shading.atHit(shading.cameraFootprint(r), r, normalize(r.d), hit->t, si, true);
+            const HitFootprint hf = shading.atHit(shading.cameraFootprint(r), r, normalize(r.d), hit->t, si);
             const Vec2 dstdx{hf.coords.duvdx.x, -hf.coords.duvdx.y};
             const Vec2 dstdy{hf.coords.duvdy.x, -hf.coords.duvdy.y};
             const double lod = s.textures[0].image()->levelOfDetail(dstdx, dstdy);
