@@ -147,25 +147,56 @@ Texel MipMap::bilinear(int level, Vec2 st, WrapMode wrap) const {
     return out;
 }
 
-double MipMap::levelOfDetail(Vec2 dstdx, Vec2 dstdy) const {
+MipMap::FootprintSides MipMap::sides(Vec2 dstdx, Vec2 dstdy) const {
     const double w = width(0), h = height(0);
-    const double ax = dstdx.x * w, ay = dstdx.y * h, bx = dstdy.x * w, by = dstdy.y * h;
+    FootprintSides s;
+    s.ax = dstdx.x * w;
+    s.ay = dstdx.y * h;
+    s.bx = dstdy.x * w;
+    s.by = dstdy.y * h;
+    s.a2 = s.ax * s.ax + s.ay * s.ay;
+    s.b2 = s.bx * s.bx + s.by * s.by;
+    return s;
+}
+
+double MipMap::levelOfDetail(Vec2 dstdx, Vec2 dstdy) const {
+    return levelOfDetail(sides(dstdx, dstdy));
+}
+
+double MipMap::levelOfDetail(const FootprintSides& s) {
     // ρ = max(hypot(a), hypot(b)). hypot is the costly part of a trilinear
     // lookup; when the squared lengths differ by far more than their rounding
     // (and neither under- nor overflows) the longer side is known and only its
     // hypot is taken: the same ρ, bit for bit, as taking both.
-    const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by;
+    const double a2 = s.a2, b2 = s.b2;
     constexpr double kMargin = 1 + 1e-9, kTiny = 1e-290, kHuge = 1e290;
     double rho;
     if (a2 > kTiny && b2 > kTiny && a2 < kHuge && b2 < kHuge && (a2 > b2 * kMargin || b2 > a2 * kMargin))
-        rho = a2 > b2 ? std::hypot(ax, ay) : std::hypot(bx, by);
+        rho = a2 > b2 ? std::hypot(s.ax, s.ay) : std::hypot(s.bx, s.by);
     else
-        rho = std::max(std::hypot(ax, ay), std::hypot(bx, by));
+        rho = std::max(std::hypot(s.ax, s.ay), std::hypot(s.bx, s.by));
     return rho > 0 && std::isfinite(rho) ? std::log2(rho) : 0.0;
 }
 
+double MipMap::trilinearLevel(Vec2 dstdx, Vec2 dstdy) const {
+    const FootprintSides s = sides(dstdx, dstdy);
+    // The squares are rounded (relative error below 1e-15) and hypot and
+    // log2 are within an ulp: a margin of 1e-9 keeps ρ on its side of 1 and
+    // of 2^last, so log2(ρ) on its side of 0 and of last. NaN fails both tests.
+    constexpr double kBelow = 1 - 1e-9, kAbove = 1 + 1e-9, kHuge = 1e290;
+    // ρ <= 1, ρ = 0 included: trilinear reads level 0.
+    if (s.a2 <= kBelow && s.b2 <= kBelow) return 0.0;
+    // ρ >= 2^last and finite (both sides: hypot(inf, NaN) is inf, which
+    // levelOfDetail maps to 0): trilinear reads the last level.
+    const int last = levels() - 1;
+    const double lastSide = double(1LL << last);
+    if (std::max(s.a2, s.b2) >= lastSide * lastSide * kAbove && s.a2 < kHuge && s.b2 < kHuge)
+        return double(last);
+    return levelOfDetail(s);
+}
+
 Texel MipMap::trilinear(Vec2 st, Vec2 dstdx, Vec2 dstdy, WrapMode wrap) const {
-    return trilinear(st, levelOfDetail(dstdx, dstdy), wrap);
+    return trilinear(st, trilinearLevel(dstdx, dstdy), wrap);
 }
 
 Texel MipMap::trilinear(Vec2 st, double lod, WrapMode wrap) const {

@@ -54,6 +54,13 @@ public:
     /// The level of detail of a footprint: log2 of its longer side in level-0
     /// texels (OpenGL's λ = log2 ρ). dstdx, dstdy: change of (s, t) per step.
     double levelOfDetail(Vec2 dstdx, Vec2 dstdy) const;
+    /// The level of detail as trilinear() reads it: levelOfDetail where it
+    /// falls between level 0 and the last level; 0 where the footprint is at
+    /// most one texel and levels() - 1 where it covers the last level (there
+    /// trilinear reads one level whatever the exact value, so the hypot and
+    /// log2 are skipped). trilinear(st, trilinearLevel(a, b), wrap) is
+    /// trilinear(st, levelOfDetail(a, b), wrap), bit for bit.
+    double trilinearLevel(Vec2 dstdx, Vec2 dstdy) const;
     /// Bilinear lookups on the two levels around levelOfDetail, blended.
     Texel trilinear(Vec2 st, Vec2 dstdx, Vec2 dstdy, WrapMode wrap) const;
     /// The same at a level of detail computed before: lookups that share a
@@ -69,6 +76,13 @@ private:
         int width = 0, height = 0;
         std::vector<float> texels;
     };
+    /// ρ² of the footprint's two sides, (ax, ay) and (bx, by), in level-0 texels.
+    struct FootprintSides {
+        double ax, ay, bx, by;
+        double a2, b2;  ///< the squared lengths, rounded
+    };
+    FootprintSides sides(Vec2 dstdx, Vec2 dstdy) const;
+    static double levelOfDetail(const FootprintSides& s);
     Texel ewaLevel(int level, Vec2 st, Vec2 a, Vec2 b, WrapMode wrap) const;
     /// Texel (xi, yi) of `l`, already wrapped (-1: black).
     Texel fetch(const Level& l, long long xi, long long yi) const;

@@ -50,7 +50,7 @@ LookupFootprint Texture::footprint(const TextureCoords& tc, TextureFilter filter
     // Rows run down: t changes against v.
     fp.dstdx = Vec2{scale.x * tc.duvdx.x, -scale.y * tc.duvdx.y};
     fp.dstdy = Vec2{scale.x * tc.duvdy.x, -scale.y * tc.duvdy.y};
-    if (filter == TextureFilter::Trilinear) fp.lod = m_image->levelOfDetail(fp.dstdx, fp.dstdy);
+    if (filter == TextureFilter::Trilinear) fp.lod = m_image->trilinearLevel(fp.dstdx, fp.dstdy);
     return fp;
 }
 

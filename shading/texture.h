@@ -42,7 +42,7 @@ struct TextureCoords {
 struct LookupFootprint {
     Vec2 duvdx, duvdy;  ///< the footprint in (u, v), for the checker's box
     Vec2 dstdx, dstdy;  ///< the same in image (s, t)
-    double lod = 0;     ///< trilinear: MipMap::levelOfDetail(dstdx, dstdy)
+    double lod = 0;     ///< trilinear: MipMap::trilinearLevel(dstdx, dstdy)
 };
 
 /// Which value of a texel a scalar map (bump height, exponent) reads: MTL's
