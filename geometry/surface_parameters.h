@@ -16,14 +16,15 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kPi = 3.1415926535897932384626433832795;
 
 /// Direction of the point (x, y) around the origin: cos φ, sin φ and φ/2π in
-/// [0, 1), φ measured counter-clockwise from +x. At the origin φ = 0, so
+/// [0, 1), φ measured counter-clockwise from +x, and the distance ρ from the
+/// origin (the callers need it too: one hypot). At the origin φ = 0, so
 /// every quantity stays finite.
 struct Azimuth {
     double u = 0;
     double cosPhi = 1, sinPhi = 0;
+    double rho;
 
-    Azimuth(double x, double y) {
-        const double rho = std::hypot(x, y);
+    Azimuth(double x, double y) : rho(std::hypot(x, y)) {
         if (!(rho > 0)) return;
         cosPhi = x / rho;
         sinPhi = y / rho;
@@ -45,7 +46,7 @@ struct LocalParameters {
 inline LocalParameters polarParameters(double x, double y, double radius) {
     const Azimuth a(x, y);
     LocalParameters l;
-    l.uv = {a.u, std::hypot(x, y) / radius};
+    l.uv = {a.u, a.rho / radius};
     l.dpdu = Vec3{-y, x, 0} * kTwoPi;
     l.dpdv = Vec3{a.cosPhi, a.sinPhi, 0} * radius;
     return l;
@@ -58,7 +59,7 @@ inline LocalParameters polarParameters(double x, double y, double radius) {
 /// scales them by its radius.
 inline LocalParameters sphericalParameters(const Vec3& w) {
     const Azimuth a(w.x, w.y);
-    const double sinTheta = std::hypot(w.x, w.y);
+    const double sinTheta = a.rho;
     const double cosTheta = std::clamp(w.z, -1.0, 1.0);
     LocalParameters l;
     l.uv = {a.u, 1.0 - std::acos(cosTheta) / kPi};
