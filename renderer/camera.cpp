@@ -115,19 +115,20 @@ RayDifferential Camera::differential(const Ray& ray, const DifferentialSteps& st
 
 RayDifferential Camera::differential(const Ray&, const Vec3& d,
                                      const DifferentialSteps& steps) const {
-    RayDifferential rd;
+    // Returned as built, member by member: a default RayDifferential would be
+    // zeroed first (a `rep stos` per camera ray) and then overwritten.
+    const Vec3 zero{0, 0, 0};
     if (m_projection == Projection::Perspective) {
         // d' has w-component -1, so |d'| = 1 / (-d·w); the unit direction
-        // d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|.
+        // d = d'/|d'| changes by (dd' - d (d·dd')) / |d'|, both steps in
+        // lockstep (step_pair.h).
         const double along = -dot(d, m_frame.w);
         const double len = 1.0 / along;  // |d'|
-        rd.dddx = (steps.dx - d * dot(d, steps.dx)) / len;
-        rd.dddy = (steps.dy - d * dot(d, steps.dy)) / len;
-        return rd;
+        const Vec3Pair dd(steps.dx, steps.dy);
+        const Vec3Pair change = (dd - d * dot(dd, d)) / both(len);
+        return RayDifferential{zero, zero, change.first(), change.second()};
     }
-    rd.dodx = steps.dx;
-    rd.dody = steps.dy;
-    return rd;
+    return RayDifferential{steps.dx, steps.dy, zero, zero};
 }
 
 RayCone Camera::cone(int width, int height, double spacing) const {

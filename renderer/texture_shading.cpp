@@ -21,20 +21,16 @@ RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
 }
 
 RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay, const Vec3& unitDir) const {
-    RayFootprint fp;
-    if (!m_footprints) return fp;
+    // Each footprint built in place (a default one would be zeroed first).
+    if (!m_footprints) return RayFootprint{};
     if (m_options.textures.footprint == TextureFootprint::Differentials)
-        fp.differential = m_scene.camera.differential(cameraRay, unitDir, m_cameraSteps);
-    else
-        fp.cone = m_cameraCone;
-    return fp;
+        return RayFootprint{m_scene.camera.differential(cameraRay, unitDir, m_cameraSteps), RayCone{}};
+    return RayFootprint{RayDifferential{}, m_cameraCone};
 }
 
 HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir,
                                    double t, const SurfaceInteraction& si) const {
-    HitFootprint hf;
-    hf.coords.uv = si.uv;
-    if (!m_footprints) return hf;
+    if (!m_footprints) return HitFootprint{TextureCoords{si.uv, Vec2{}, Vec2{}}, Vec3{}, Vec3{}, 0.0};
     // The unit direction is ray.d / length(ray.d): where squaring is safe
     // (every ray but a degenerate one) that is normalize(ray.d), the
     // integrator's dir, bit for bit, and its divisions are saved.
@@ -42,15 +38,21 @@ HitFootprint TextureShading::atHit(const RayFootprint& fp, const Ray& ray, const
     const bool safe = squaredLengthIsSafe(l2);
     const double len = safe ? std::sqrt(l2) : length(ray.d);
     const Vec3 d = safe ? dir : ray.d / len;
+    // The record is built once at the end from these (a default HitFootprint
+    // would be zeroed first, at every hit).
+    Vec3Pair dp;
+    double coneWidth = 0;
     if (m_options.textures.footprint == TextureFootprint::Differentials) {
-        transferDifferential(fp.differential, d, t * len, si.ng, hf.dpdx, hf.dpdy);
+        dp = transferDifferentials(fp.differential, d, t * len, si.ng);
     } else {
-        hf.coneWidth = fp.cone.widthAt(t * len);
-        coneFootprint(hf.coneWidth, d, si.ng, si.dpdu, hf.dpdx, hf.dpdy);
+        coneWidth = fp.cone.widthAt(t * len);
+        Vec3 dpdx, dpdy;
+        coneFootprint(coneWidth, d, si.ng, si.dpdu, dpdx, dpdy);
+        dp = Vec3Pair(dpdx, dpdy);
     }
-    TextureCoords& tc = hf.coords;
-    surfaceParameterChanges(si.dpdu, si.dpdv, hf.dpdx, hf.dpdy, tc.duvdx, tc.duvdy);
-    return hf;
+    Vec2 duvdx, duvdy;
+    surfaceParameterChanges(si.dpdu, si.dpdv, dp, duvdx, duvdy);
+    return HitFootprint{TextureCoords{si.uv, duvdx, duvdy}, dp.first(), dp.second(), coneWidth};
 }
 
 void TextureShading::normalChange(const HitFootprint& hf, const SurfaceInteraction& si,
@@ -82,15 +84,13 @@ RayFootprint TextureShading::reflected(const RayFootprint& fp, const HitFootprin
                                        const SurfaceInteraction& si, bool entering,
                                        const Vec3& d, const Vec3& n) const {
     if (!m_footprints) return fp;
-    RayFootprint out;
     if (m_options.textures.footprint == TextureFootprint::Differentials) {
         Vec3 dndx, dndy;
         normalChange(hf, si, entering, dndx, dndy);
-        out.differential = reflectDifferential(fp.differential, d, n, hf.dpdx, hf.dpdy, dndx, dndy);
-    } else {
-        out.cone = reflectCone(fp.cone, hf.coneWidth, curvature(si, entering));
+        return RayFootprint{reflectDifferential(fp.differential, d, n, hf.dpdx, hf.dpdy, dndx, dndy),
+                            RayCone{}};
     }
-    return out;
+    return RayFootprint{RayDifferential{}, reflectCone(fp.cone, hf.coneWidth, curvature(si, entering))};
 }
 
 RayFootprint TextureShading::refracted(const RayFootprint& fp, const HitFootprint& hf,
@@ -98,16 +98,15 @@ RayFootprint TextureShading::refracted(const RayFootprint& fp, const HitFootprin
                                        const Vec3& d, const Vec3& n, const Vec3& out,
                                        double eta) const {
     if (!m_footprints) return fp;
-    RayFootprint r;
     if (m_options.textures.footprint == TextureFootprint::Differentials) {
         Vec3 dndx, dndy;
         normalChange(hf, si, entering, dndx, dndy);
-        r.differential = refractDifferential(fp.differential, d, n, out, eta, hf.dpdx, hf.dpdy,
-                                             dndx, dndy);
-    } else {
-        r.cone = refractCone(fp.cone, hf.coneWidth, curvature(si, entering), eta);
+        return RayFootprint{refractDifferential(fp.differential, d, n, out, eta, hf.dpdx, hf.dpdy,
+                                                dndx, dndy),
+                            RayCone{}};
     }
-    return r;
+    return RayFootprint{RayDifferential{},
+                        refractCone(fp.cone, hf.coneWidth, curvature(si, entering), eta)};
 }
 
 }  // namespace raylab

@@ -9,6 +9,7 @@
 
 #include "geometry/spawn.h"
 #include "renderer/cancel.h"
+#include "renderer/late_value.h"
 #include "shading/brdf.h"
 #include "shading/optics.h"
 #include "shading/radiance_range.h"
@@ -156,22 +157,26 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     const bool entering = si.frontFace;
     const Vec3 dir = normalize(ray.d);
     const SurfaceOptics* optics = &m_scene.materials[si.material];
-    [[maybe_unused]] HitFootprintOf<E> hitFootprint;
-    [[maybe_unused]] SurfaceOptics texturedOptics;
     // The footprint the ray carries; a camera ray's (carried == nullptr) is
-    // computed here, where normalize(ray.d) is known (std::optional: no
-    // zeroed record on the other rays).
-    [[maybe_unused]] std::optional<Footprint<E>> cameraFootprint;
-    if constexpr (textured(E)) {
+    // computed here, where normalize(ray.d) is known (LateValue: nothing is
+    // built or zeroed on the other rays).
+    [[maybe_unused]] LateValue<Footprint<E>> cameraFootprint;
+    if constexpr (textured(E))
         if (!carried) carried = &cameraFootprint.emplace(m_textures->cameraFootprint(ray, dir));
-        // Untextured materials pass the footprint on too (a plain mirror
-        // showing a textured object).
-        hitFootprint = m_textures->atHit(*carried, ray, dir, si.t, si);
+    // The hit's footprint, built in place (a default record would be zeroed
+    // first at every hit). Untextured materials pass the footprint on too (a
+    // plain mirror showing a textured object).
+    [[maybe_unused]] const HitFootprintOf<E> hitFootprint = [&]() -> HitFootprintOf<E> {
+        if constexpr (textured(E))
+            return m_textures->atHit(*carried, ray, dir, si.t, si);
+        else
+            return {};
+    }();
+    [[maybe_unused]] LateValue<SurfaceOptics> texturedOptics;
+    if constexpr (textured(E)) {
         const Material& material = m_scene.materials[si.material];
-        if (material.maps.any()) {
-            texturedOptics = m_textures->shade(material, si, hitFootprint);
-            optics = &texturedOptics;
-        }
+        if (material.maps.any())
+            optics = &texturedOptics.emplace(m_textures->shade(material, si, hitFootprint));
     }
     const SurfaceOptics& m = *optics;
     // Normals on the side the ray arrives from.
@@ -209,10 +214,13 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                     const double w = saturated(weight * m.kt.maxComponent());
                     if ((!m_prune || m_options.spd || w >= m_options.minWeight) && mayBranch(state.spent)) {
                         const SpawnedRay r = spawn(*t);
-                        Footprint<E> next{};
-                        if constexpr (textured(E))
-                            next = m_textures->refracted(*carried, hitFootprint, si, entering, dir, n, *t,
-                                                         etaI / etaT);
+                        const Footprint<E> next = [&]() -> Footprint<E> {
+                            if constexpr (textured(E))
+                                return m_textures->refracted(*carried, hitFootprint, si, entering, dir,
+                                                             n, *t, etaI / etaT);
+                            else
+                                return {};
+                        }();
                         result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
                                                   state, nullptr, &next);
                     }
@@ -228,9 +236,12 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                 mayBranch(state.spent)) {
                 const Vec3 r = reflect(dir, n);
                 const SpawnedRay s = spawn(r);
-                Footprint<E> next{};
-                if constexpr (textured(E))
-                    next = m_textures->reflected(*carried, hitFootprint, si, entering, dir, n);
+                const Footprint<E> next = [&]() -> Footprint<E> {
+                    if constexpr (textured(E))
+                        return m_textures->reflected(*carried, hitFootprint, si, entering, dir, n);
+                    else
+                        return {};
+                }();
                 result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
                                                    state, nullptr, &next);
             }

@@ -7,13 +7,6 @@ namespace raylab {
 
 namespace {
 
-Vec3 transferOne(const Vec3& dodx, const Vec3& dddx, const Vec3& d, double t, const Vec3& n,
-                 double dn) {
-    const Vec3 moved = dodx + dddx * t;
-    const double dt = -dot(moved, n) / dn;
-    return moved + d * dt;
-}
-
 Vec3 reflectOne(const Vec3& dddx, const Vec3& d, const Vec3& n, const Vec3& dndx) {
     // d/dx [d - 2 (d·n) n] = dd - 2 [(d·n) dn + (dd·n + d·dn) n]
     const double dDotN = dot(d, n);
@@ -36,35 +29,32 @@ Vec3 refractOne(const Vec3& dddx, const Vec3& d, const Vec3& n, const Vec3& t, d
 
 void transferDifferential(const RayDifferential& rd, const Vec3& d, double t, const Vec3& n,
                           Vec3& dpdx, Vec3& dpdy) {
+    const Vec3Pair dp = transferDifferentials(rd, d, t, n);
+    dpdx = dp.first();
+    dpdy = dp.second();
+}
+
+Vec3Pair transferDifferentials(const RayDifferential& rd, const Vec3& d, double t, const Vec3& n) {
     const double dn = dot(d, n);
-    if (!(std::abs(dn) > 0)) {
-        dpdx = dpdy = Vec3{0, 0, 0};
-        return;
-    }
-    dpdx = transferOne(rd.dodx, rd.dddx, d, t, n, dn);
-    dpdy = transferOne(rd.dody, rd.dddy, d, t, n, dn);
+    if (!(std::abs(dn) > 0)) return Vec3Pair(Vec3{0, 0, 0}, Vec3{0, 0, 0});
+    // Per step: moved = do + t dd, dt = -(moved·n) / (d·n), dp = moved + dt d.
+    const Vec3Pair moved = Vec3Pair(rd.dodx, rd.dody) + Vec3Pair(rd.dddx, rd.dddy) * both(t);
+    const StepPair dt = -dot(moved, n) / both(dn);
+    return moved + d * dt;
 }
 
 RayDifferential reflectDifferential(const RayDifferential& rd, const Vec3& d, const Vec3& n,
                                     const Vec3& dpdx, const Vec3& dpdy, const Vec3& dndx,
                                     const Vec3& dndy) {
-    RayDifferential out;
-    out.dodx = dpdx;
-    out.dody = dpdy;
-    out.dddx = reflectOne(rd.dddx, d, n, dndx);
-    out.dddy = reflectOne(rd.dddy, d, n, dndy);
-    return out;
+    // Built in place: a default RayDifferential would be zeroed first.
+    return RayDifferential{dpdx, dpdy, reflectOne(rd.dddx, d, n, dndx), reflectOne(rd.dddy, d, n, dndy)};
 }
 
 RayDifferential refractDifferential(const RayDifferential& rd, const Vec3& d, const Vec3& n,
                                     const Vec3& refracted, double eta, const Vec3& dpdx,
                                     const Vec3& dpdy, const Vec3& dndx, const Vec3& dndy) {
-    RayDifferential out;
-    out.dodx = dpdx;
-    out.dody = dpdy;
-    out.dddx = refractOne(rd.dddx, d, n, refracted, eta, dndx);
-    out.dddy = refractOne(rd.dddy, d, n, refracted, eta, dndy);
-    return out;
+    return RayDifferential{dpdx, dpdy, refractOne(rd.dddx, d, n, refracted, eta, dndx),
+                           refractOne(rd.dddy, d, n, refracted, eta, dndy)};
 }
 
 namespace {
@@ -79,13 +69,22 @@ struct TangentSystem {
         : a00(dot(dpdu, dpdu)), a01(dot(dpdu, dpdv)), a11(dot(dpdv, dpdv)),
           det(a00 * a11 - a01 * a01), solvable(std::abs(det) > 0 && std::isfinite(det)) {}
 
-    Vec2 solve(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp) const {
-        if (!solvable) return Vec2{0, 0};
-        const double b0 = dot(dpdu, dp), b1 = dot(dpdv, dp);
+    /// (du, dv) for both steps: b0 = dpdu·dp, b1 = dpdv·dp per lane,
+    /// du = (a11 b0 - a01 b1) / det, dv = (a00 b1 - a01 b0) / det.
+    void solve(const Vec3& dpdu, const Vec3& dpdv, const Vec3Pair& dp, Vec2& first,
+               Vec2& second) const {
+        if (!solvable) {
+            first = second = Vec2{0, 0};
+            return;
+        }
+        const StepPair b0 = dot(dp, dpdu), b1 = dot(dp, dpdv);
+        const StepPair du = (both(a11) * b0 - both(a01) * b1) / both(det);
+        const StepPair dv = (both(a00) * b1 - both(a01) * b0) / both(det);
         const auto clampFinite = [](double x) {
             return std::isfinite(x) ? std::clamp(x, -1e8, 1e8) : 0.0;
         };
-        return Vec2{clampFinite((a11 * b0 - a01 * b1) / det), clampFinite((a00 * b1 - a01 * b0) / det)};
+        first = Vec2{clampFinite(du[0]), clampFinite(dv[0])};
+        second = Vec2{clampFinite(du[1]), clampFinite(dv[1])};
     }
 };
 
@@ -93,16 +92,20 @@ struct TangentSystem {
 
 void surfaceParameterChange(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp, double& du,
                             double& dv) {
-    const Vec2 d = TangentSystem(dpdu, dpdv).solve(dpdu, dpdv, dp);
+    Vec2 d, unused;
+    TangentSystem(dpdu, dpdv).solve(dpdu, dpdv, Vec3Pair(dp, dp), d, unused);
     du = d.x;
     dv = d.y;
 }
 
 void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dpdx, const Vec3& dpdy,
                              Vec2& duvdx, Vec2& duvdy) {
-    const TangentSystem system(dpdu, dpdv);
-    duvdx = system.solve(dpdu, dpdv, dpdx);
-    duvdy = system.solve(dpdu, dpdv, dpdy);
+    surfaceParameterChanges(dpdu, dpdv, Vec3Pair(dpdx, dpdy), duvdx, duvdy);
+}
+
+void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3Pair& dp, Vec2& duvdx,
+                             Vec2& duvdy) {
+    TangentSystem(dpdu, dpdv).solve(dpdu, dpdv, dp, duvdx, duvdy);
 }
 
 }  // namespace raylab

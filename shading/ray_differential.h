@@ -8,6 +8,7 @@
 
 #include "geometry/vec.h"
 #include "geometry/vec2.h"
+#include "shading/step_pair.h"
 
 namespace raylab {
 
@@ -22,6 +23,8 @@ struct RayDifferential {
 /// d must be unit length; a ray parallel to the plane gives zero.
 void transferDifferential(const RayDifferential& rd, const Vec3& d, double t, const Vec3& n,
                           Vec3& dpdx, Vec3& dpdy);
+/// The same, (dp/dx, dp/dy) as a pair: both steps in lockstep (step_pair.h).
+Vec3Pair transferDifferentials(const RayDifferential& rd, const Vec3& d, double t, const Vec3& n);
 
 /// The mirror ray's differential, r = d - 2 (d·n) n, from the hit's dp/dx,
 /// dp/dy and the normal's change dn/dx, dn/dy (n on the side d arrives from).
@@ -43,5 +46,8 @@ void surfaceParameterChange(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dp, 
 /// duvdx = (du, dv) of dpdx, duvdy of dpdy.
 void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3& dpdx, const Vec3& dpdy,
                              Vec2& duvdx, Vec2& duvdy);
+/// The same for (dp/dx, dp/dy) as a pair, both solved in lockstep.
+void surfaceParameterChanges(const Vec3& dpdu, const Vec3& dpdv, const Vec3Pair& dp, Vec2& duvdx,
+                             Vec2& duvdy);
 
 }  // namespace raylab

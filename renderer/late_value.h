@@ -1,0 +1,35 @@
+#pragma once
+// Storage for a value built later in a scope, or never, that costs nothing
+// until it is built. std::optional would do, but GCC 12's libstdc++ zeroes
+// the whole payload of a disengaged optional (a `rep stos` of 120-160 bytes);
+// the integrator keeps two such values per hit (a camera ray's footprint,
+// the textured optics), which showed in its profile.
+
+#include <new>
+#include <type_traits>
+#include <utility>
+
+namespace raylab {
+
+template <class T>
+class LateValue {
+    static_assert(std::is_trivially_destructible_v<T>, "LateValue never runs a destructor");
+
+public:
+    LateValue() {}  // leaves the storage as it is: nothing is read before emplace
+    LateValue(const LateValue&) = delete;
+    LateValue& operator=(const LateValue&) = delete;
+
+    /// Builds the value from `args` (a prvalue argument is moved in) and returns it.
+    template <class... Args>
+    T& emplace(Args&&... args) {
+        return *::new (static_cast<void*>(&m_value)) T(std::forward<Args>(args)...);
+    }
+
+private:
+    union {
+        T m_value;
+    };
+};
+
+}  // namespace raylab
