@@ -15,7 +15,12 @@ long long floorIndex(double x) {
     constexpr double kLimit = 4503599627370496.0;  // 2^52
     if (!(x > -kLimit)) return -(1LL << 52);       // also NaN
     if (x > kLimit) return 1LL << 52;
-    return static_cast<long long>(std::floor(x));
+    // floor without a call to std::floor (a library call per coordinate on
+    // baseline x86-64, which has no SSE4.1 round): the conversion truncates
+    // towards zero, one less below zero unless x was an integer. Exact here:
+    // |x| <= 2^52, so x's integer part and double(i) are exact.
+    const long long i = static_cast<long long>(x);
+    return double(i) > x ? i - 1 : i;
 }
 
 /// Index into [0, n), or -1 for a texel outside the image under WrapMode::Black.

@@ -264,3 +264,41 @@ TEST_CASE("LateValue: nothing built until emplace, then the value given") {
     LateValue<double> x;
     CHECK(x.emplace(2.25) == 2.25);
 }
+
+TEST_CASE("texel indices without std::floor: point lookups pick the texel floor(s w), floor(t h)") {
+    // A 7x5 one-channel image whose texel (x, y) holds 10 y + x: the value
+    // read names the texel. Coordinates on texel edges, just off them, below
+    // zero (Repeat and Clamp wrap them), beyond 2^52 and NaN.
+    std::vector<float> v;
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) v.push_back(float(10 * y + x));
+    const MipMap m(7, 5, 1, std::move(v));
+    const auto expected = [&](double s, double t, WrapMode wrap) {
+        const auto index = [](double c) {
+            if (!(c > -4503599627370496.0)) return -(1LL << 52);
+            if (c > 4503599627370496.0) return 1LL << 52;
+            return static_cast<long long>(std::floor(c));
+        };
+        return m.texel(0, index(s * 7), index(t * 5), wrap)[0];
+    };
+    Values r;
+    std::vector<double> coords{0.0, -0.0, 1.0, -1.0, 3.0 / 7, -3.0 / 7, 2.0 / 5, -2.0 / 5, 1e-17, -1e-17,
+                               std::nextafter(3.0 / 7, 0.0), std::nextafter(-3.0 / 7, -1.0), 1e16, -1e16,
+                               4503599627370495.5 / 7, -4503599627370495.5 / 7, 1e300, -1e300,
+                               std::nan(""), std::numeric_limits<double>::infinity()};
+    for (int i = 0; i < 200; ++i) coords.push_back((r.uniform() - 0.5) * 40);
+    for (int i = 0; i < 50; ++i) coords.push_back(std::round((r.uniform() - 0.5) * 80) / 7);  // texel edges
+    int compared = 0;
+    for (const double s : coords)
+        for (const double t : coords)
+            for (const WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp, WrapMode::Black}) {
+                const double got = m.point({s, t}, wrap)[0];
+                const double want = expected(s, t, wrap);
+                CHECK(same(got, want));
+                ++compared;
+            }
+    CHECK(compared == int(coords.size() * coords.size() * 3));
+    // Hand-computed: s = -0.1 is texel x = floor(-0.7) = -1, which Repeat wraps to 6.
+    CHECK(m.point({-0.1, 0.1}, WrapMode::Repeat)[0] == 6.0f);
+    CHECK(m.point({-0.1, 0.1}, WrapMode::Clamp)[0] == 0.0f);
+}
