@@ -46,6 +46,17 @@ Texel lerp(double f, const Texel& a, const Texel& b) {
     return r;
 }
 
+/// Bilinear blend of four texels' first C channels into out[0..C).
+template <int C>
+inline void blendChannels(const float* p00, const float* p10, const float* p01, const float* p11,
+                          double fx, double fy, Texel& out) {
+    for (int c = 0; c < C; ++c) {
+        const double top = (1 - fx) * double(p00[c]) + fx * double(p10[c]);
+        const double bottom = (1 - fx) * double(p01[c]) + fx * double(p11[c]);
+        out[size_t(c)] = (1 - fy) * top + fy * bottom;
+    }
+}
+
 /// Gaussian falloff of the EWA filter, exp(-α r²) - exp(-α) with α = 2 as in
 /// pbrt, tabulated over r² in [0, 1).
 constexpr int kEwaTableSize = 128;
@@ -144,10 +155,21 @@ Texel MipMap::bilinear(int level, Vec2 st, WrapMode wrap) const {
     };
     const float *p00 = at(xa, ya), *p10 = at(xb, ya), *p01 = at(xa, yb), *p11 = at(xb, yb);
     Texel out{0, 0, 0, 0};
-    for (int c = 0; c < m_channels; ++c) {
-        const double top = (1 - fx) * double(p00[c]) + fx * double(p10[c]);
-        const double bottom = (1 - fx) * double(p01[c]) + fx * double(p11[c]);
-        out[size_t(c)] = (1 - fy) * top + fy * bottom;
+    // The channel count as a constant (RGB and grey are the common images):
+    // the same blend per channel, unrolled.
+    switch (m_channels) {
+    case 3:
+        blendChannels<3>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    case 1:
+        blendChannels<1>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    case 4:
+        blendChannels<4>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    default:
+        blendChannels<2>(p00, p10, p01, p11, fx, fy, out);
+        break;
     }
     return out;
 }

@@ -302,3 +302,29 @@ TEST_CASE("texel indices without std::floor: point lookups pick the texel floor(
     CHECK(m.point({-0.1, 0.1}, WrapMode::Repeat)[0] == 6.0f);
     CHECK(m.point({-0.1, 0.1}, WrapMode::Clamp)[0] == 0.0f);
 }
+
+TEST_CASE("bilinear blend unrolled per channel count: the per-channel formula, bit for bit, 1 to 4 channels") {
+    Values r;
+    for (int channels = 1; channels <= 4; ++channels) {
+        const int w = 5, h = 3;
+        std::vector<float> v(size_t(w * h * channels));
+        for (float& f : v) f = float(r.uniform() * 4 - 1);
+        const MipMap m(w, h, channels, v);
+        for (int i = 0; i < 2000; ++i) {
+            const Vec2 st{(r.uniform() - 0.25) * 2, (r.uniform() - 0.25) * 2};
+            const WrapMode wrap = i % 3 == 0 ? WrapMode::Repeat : i % 3 == 1 ? WrapMode::Clamp : WrapMode::Black;
+            const double x = st.x * w - 0.5, y = st.y * h - 0.5;
+            const long long x0 = static_cast<long long>(std::floor(x)), y0 = static_cast<long long>(std::floor(y));
+            const double fx = x - double(x0), fy = y - double(y0);
+            const Texel a = m.texel(0, x0, y0, wrap), b = m.texel(0, x0 + 1, y0, wrap);
+            const Texel c = m.texel(0, x0, y0 + 1, wrap), d = m.texel(0, x0 + 1, y0 + 1, wrap);
+            const Texel got = m.bilinear(0, st, wrap);
+            for (int k = 0; k < 4; ++k) {
+                const double top = (1 - fx) * a[size_t(k)] + fx * b[size_t(k)];
+                const double bottom = (1 - fx) * c[size_t(k)] + fx * d[size_t(k)];
+                const double want = k < channels ? (1 - fy) * top + fy * bottom : 0.0;
+                CHECK(same(got[size_t(k)], want));
+            }
+        }
+    }
+}
