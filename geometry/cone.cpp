@@ -138,7 +138,7 @@ SurfaceGeometry Cone::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail
     }
     g.ng = g.ns = n;
     g.frontFace = dot(ray.d, n) < 0;
-    if (detail == SurfaceDetail::Complete) {
+    if (detail != SurfaceDetail::Normals) {
         const Vec3 local = m_frame.toLocal(g.p - m_base);
         if (baseCap || apexCap) {
             const LocalParameters l = polarParameters(local.x, local.y, baseCap ? m_r0 : m_r1);

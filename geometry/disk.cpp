@@ -36,7 +36,7 @@ SurfaceGeometry Disk::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail
     g.p = p - m_frame.n * dot(m_frame.n, p - m_centre);
     g.ng = g.ns = m_frame.n;
     g.frontFace = dot(ray.d, m_frame.n) < 0;
-    if (detail == SurfaceDetail::Complete) {
+    if (detail != SurfaceDetail::Normals) {
         const Vec3 local = m_frame.toLocal(g.p - m_centre);
         const LocalParameters l = polarParameters(local.x, local.y, m_radius);
         g.uv = l.uv;

@@ -42,7 +42,7 @@ SurfaceGeometry Plane::surface(const Ray& ray, const ShapeHit& hit, SurfaceDetai
     g.p = p - m_frame.n * dot(m_frame.n, p - m_point);
     g.ng = g.ns = m_frame.n;
     g.frontFace = dot(ray.d, m_frame.n) < 0;
-    if (detail == SurfaceDetail::Complete) {
+    if (detail != SurfaceDetail::Normals) {
         const Vec3 local = g.p - m_point;
         g.uv = {dot(local, m_frame.t), dot(local, m_frame.b)};
         g.dpdu = m_frame.t;

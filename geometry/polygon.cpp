@@ -426,7 +426,7 @@ SurfaceGeometry Polygon::surface(const Ray& ray, const ShapeHit& hit, SurfaceDet
     g.ng = m_frame.n;
     g.ns = shadingNormal(g.p);
     g.frontFace = dot(ray.d, g.ng) < 0;
-    if (detail == SurfaceDetail::Complete) {
+    if (detail != SurfaceDetail::Normals) {
         const Vec3 local = g.p - m_centroid;
         // A degenerate extent (never for a valid polygon) keeps u or v at 0.
         const auto scaled = [](double x, double size) { return size > 0 ? x / size : 0.0; };

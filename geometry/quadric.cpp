@@ -163,7 +163,7 @@ SurfaceGeometry Quadric::surface(const Ray& ray, const ShapeHit& hit, SurfaceDet
     if (n == Vec3{} || !isFinite(n)) n = -normalize(ray.d);  // singular point
     g.ng = g.ns = n;
     g.frontFace = dot(ray.d, n) < 0;
-    if (detail == SurfaceDetail::Complete) surfaceParameters(g, q, gradient);
+    if (detail != SurfaceDetail::Normals) surfaceParameters(g, q, gradient);
     return g;
 }
 

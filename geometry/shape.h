@@ -60,8 +60,10 @@ struct ShapeHit {
 /// derivatives cost trigonometry on spheres and cones, so the integrator asks
 /// for them only when an effect (textures, footprints) reads them.
 enum class SurfaceDetail {
-    Normals,   ///< p, ng, ns, frontFace, span, color
-    Complete,  ///< also uv, dpdu, dpdv, dndu, dndv
+    Normals,      ///< p, ng, ns, frontFace, span, color
+    Derivatives,  ///< also dpdu, dpdv, dndu, dndv; uv may stay zero where it costs
+                  ///< trigonometry (a sphere's), bit for bit the derivatives of Complete
+    Complete,     ///< also uv
 };
 
 /// Full local geometry of the winning hit.
@@ -79,7 +81,7 @@ struct SurfaceGeometry {
     /// Colour of the surface point that multiplies the material's kd: a
     /// mesh's interpolated vertex colours, white (1, 1, 1) for every other surface.
     Vec3 color{1, 1, 1};
-    // SurfaceDetail::Complete only (zero otherwise). docs/scene-format.md
+    // SurfaceDetail::Complete (the derivatives also for Derivatives; zero otherwise). docs/scene-format.md
     // documents each primitive's parametrisation.
     Vec2 uv;               ///< surface parameters, [0,1]² unless documented otherwise
     Vec3 dpdu, dpdv;       ///< ∂p/∂u, ∂p/∂v (tangent to the surface)
@@ -127,7 +129,7 @@ public:
     virtual bool occludedAny(const Ray& ray, double tMin, double tMax,
                              const IntersectOptions& opt) const;
 
-    /// Point, normals and (for SurfaceDetail::Complete) surface parameters of a
+    /// Point, normals and (for Derivatives and Complete) surface parameters of a
     /// hit previously returned by intersect() for primitive `prim`.
     virtual SurfaceGeometry surfaceAt(uint32_t prim, const Ray& ray, const ShapeHit& hit,
                                       const IntersectOptions& opt,

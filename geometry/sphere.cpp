@@ -100,8 +100,11 @@ SurfaceGeometry Sphere::surface(const Ray& ray, const ShapeHit& hit, SurfaceDeta
     // Reproject onto the surface: removes the error o + t·d accumulates along t.
     g.p = m_centre + n * m_radius;
     g.frontFace = dot(ray.d, n) < 0;
-    if (detail == SurfaceDetail::Complete) {
-        const LocalParameters l = sphericalParameters(m_frame.toLocal(n));
+    if (detail != SurfaceDetail::Normals) {
+        // uv (an atan2 and an acos) only for Complete: the footprint of a
+        // mirror or glass ball needs the derivatives alone.
+        const LocalParameters l =
+            sphericalParameters(m_frame.toLocal(n), detail == SurfaceDetail::Complete);
         g.uv = l.uv;
         // n = ω(u, v) and p = centre + r ω: the normal's derivatives are ω's.
         g.dndu = m_frame.toWorld(l.dpdu);

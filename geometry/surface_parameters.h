@@ -24,10 +24,12 @@ struct Azimuth {
     double cosPhi = 1, sinPhi = 0;
     double rho;
 
-    Azimuth(double x, double y) : rho(std::hypot(x, y)) {
+    /// withAngle = false leaves u = 0 (no atan2); the rest is the same.
+    Azimuth(double x, double y, bool withAngle = true) : rho(std::hypot(x, y)) {
         if (!(rho > 0)) return;
         cosPhi = x / rho;
         sinPhi = y / rho;
+        if (!withAngle) return;
         double phi = std::atan2(y, x);
         if (phi < 0) phi += kTwoPi;
         u = phi / kTwoPi;
@@ -57,12 +59,13 @@ inline LocalParameters polarParameters(double x, double y, double radius) {
 /// pole (v = 0 at the south pole, 1 at the north pole, so an image's top row
 /// lands at the top). dpdu and dpdv are the derivatives of w itself; a sphere
 /// scales them by its radius.
-inline LocalParameters sphericalParameters(const Vec3& w) {
-    const Azimuth a(w.x, w.y);
+/// withUv = false skips uv (left zero): the derivatives are the same bits.
+inline LocalParameters sphericalParameters(const Vec3& w, bool withUv = true) {
+    const Azimuth a(w.x, w.y, withUv);
     const double sinTheta = a.rho;
     const double cosTheta = std::clamp(w.z, -1.0, 1.0);
     LocalParameters l;
-    l.uv = {a.u, 1.0 - std::acos(cosTheta) / kPi};
+    if (withUv) l.uv = {a.u, 1.0 - std::acos(cosTheta) / kPi};
     l.dpdu = Vec3{-w.y, w.x, 0} * kTwoPi;
     // dθ/dv = -π.
     l.dpdv = Vec3{cosTheta * a.cosPhi, cosTheta * a.sinPhi, -sinTheta} * -kPi;

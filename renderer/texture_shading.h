@@ -36,8 +36,8 @@ public:
     /// it at the camera ray's hit; a ray that misses needs no footprint).
     RayFootprint cameraFootprint(const Ray& cameraRay, const Vec3& unitDir) const;
     /// The footprint at a hit at parameter t of `ray`; `dir` is
-    /// normalize(ray.d) (the integrator has it); `si` has
-    /// SurfaceDetail::Complete.
+    /// normalize(ray.d) (the integrator has it); `si` has at least
+    /// SurfaceDetail::Derivatives (uv is not read).
     HitFootprint atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir, double t,
                        const SurfaceInteraction& si) const;
     /// The material's values at the hit; bends si.ns by its bump or normal map.

@@ -149,9 +149,15 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) state.counters.cameraHits++;
 
-    SurfaceInteraction si = m_scene.surfaceAt(
-        ray, *hit, m_options.accelOptions.intersect,
-        textured(E) ? SurfaceDetail::Complete : SurfaceDetail::Normals);
+    // Textured scenes need the surface derivatives at every hit (footprints),
+    // uv only where the material has maps.
+    SurfaceDetail detail = SurfaceDetail::Normals;
+    if constexpr (textured(E))
+        detail = m_scene.materials[m_scene.objects[hit->object].materialOf(hit->prim)].maps.any()
+                     ? SurfaceDetail::Complete
+                     : SurfaceDetail::Derivatives;
+    SurfaceInteraction si =
+        m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
     // `entering` is false when the ray is inside the object (it hit the back
     // of the outward normal).
     const bool entering = si.frontFace;

@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -359,4 +360,36 @@ TEST_CASE("surface parameters: derivatives agree with finite differences of surf
     checkFiniteDifferences("triangle with uv and vertex normals", *tri, 0, {0.6, 1.2, 0}, 1.5);
     auto bare = singleTriangle(false, true);
     checkFiniteDifferences("triangle, default uv", *bare, 0, {0.6, 1.2, 0}, 1.5);
+}
+
+TEST_CASE("SurfaceDetail::Derivatives: the derivatives of Complete bit for bit, a sphere's uv left zero") {
+    // Textured scenes ask for Derivatives where the material has no maps (a
+    // mirror or glass ball): footprints read the derivatives, and a change in
+    // any bit of them would change the pictures.
+    auto sphere = makeSphere({1, 2, 3}, 1.5, {0.3, 1, 0.2});
+    auto disk = makeDisk({0, 0, 0}, {0, 0, 1}, 2);
+    const std::vector<std::pair<const Shape*, Vec3>> cases = {
+        {sphere.get(), {-4, 0.5, 1}}, {sphere.get(), {1.2, 9, 3.1}}, {sphere.get(), {1, 2, -7}},
+        {sphere.get(), {2.5, 7, 4}},  // along the pole: the azimuth's origin case
+        {disk.get(), {0.7, -0.4, 5}}};
+    for (const auto& [shape, from] : cases) {
+        const Vec3 target = shape == sphere.get() ? Vec3{1, 2, 3} : Vec3{0.3, 0.2, 0};
+        const Ray ray{from, target - from};
+        const auto h = shape->intersect(0, ray, 0, kInf, {});
+        REQUIRE(h);
+        const SurfaceGeometry c = shape->surfaceAt(0, ray, *h, {}, SurfaceDetail::Complete);
+        const SurfaceGeometry d = shape->surfaceAt(0, ray, *h, {}, SurfaceDetail::Derivatives);
+        for (const auto& [a, b] : {std::pair{c.dpdu, d.dpdu}, std::pair{c.dpdv, d.dpdv},
+                                   std::pair{c.dndu, d.dndu}, std::pair{c.dndv, d.dndv},
+                                   std::pair{c.p, d.p}, std::pair{c.ns, d.ns}}) {
+            CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+        }
+        CHECK(lengthSquared(c.dpdu) > 0);  // Complete computed them at all
+        if (shape == sphere.get()) {
+            CHECK(d.uv.x == 0);
+            CHECK(d.uv.y == 0);
+        } else {
+            CHECK(std::memcmp(&c.uv, &d.uv, sizeof c.uv) == 0);  // a disk's uv costs no trigonometry beyond the azimuth it shares
+        }
+    }
 }
