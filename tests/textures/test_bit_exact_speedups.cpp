@@ -23,7 +23,12 @@ using namespace raylab;
 
 namespace {
 
-bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+/// The same bits; any two NaNs count as the same: the compiler may fold
+/// (-a) * (-b) into a * b, which changes only a NaN's sign, and a NaN never
+/// reaches a pixel (it is replaced before the film).
+bool same(double a, double b) {
+    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+}
 bool same(const Vec3& a, const Vec3& b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
 bool same(const Vec2& a, const Vec2& b) { return same(a.x, b.x) && same(a.y, b.y); }
 
