@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "geometry/hypot.h"
 #include "geometry/vec.h"
 #include "geometry/vec2.h"
 
@@ -25,7 +26,7 @@ struct Azimuth {
     double rho;
 
     /// withAngle = false leaves u = 0 (no atan2); the rest is the same.
-    Azimuth(double x, double y, bool withAngle = true) : rho(std::hypot(x, y)) {
+    Azimuth(double x, double y, bool withAngle = true) : rho(fastHypot(x, y)) {
         if (!(rho > 0)) return;
         cosPhi = x / rho;
         sinPhi = y / rho;

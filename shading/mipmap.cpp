@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "geometry/hypot.h"
 
 namespace raylab {
 
@@ -29,7 +32,10 @@ long long wrapIndex(long long i, int n, WrapMode wrap) {
     if (i >= 0 && i < n) return i;
     switch (wrap) {
     case WrapMode::Repeat: {
-        const long long r = i % n;
+        // A 32-bit division where the index fits (a tiled floor's lookups are
+        // all outside [0, n)): the same remainder, at a fraction of the
+        // latency of a 64-bit one on x86-64.
+        const long long r = i >= INT32_MIN && i <= INT32_MAX ? int32_t(i) % n : i % n;
         return r < 0 ? r + n : r;
     }
     case WrapMode::Clamp:
@@ -38,6 +44,14 @@ long long wrapIndex(long long i, int n, WrapMode wrap) {
         break;
     }
     return i < 0 || i >= n ? -1 : i;
+}
+
+/// wrapIndex(i + 1, n, wrap), given a = wrapIndex(i, n, wrap): under Repeat
+/// (i + 1) mod n is (a + 1) mod n, so the second texel of a bilinear
+/// footprint costs no division.
+long long wrapNextIndex(long long i, long long a, int n, WrapMode wrap) {
+    if (wrap == WrapMode::Repeat) return a + 1 < n ? a + 1 : 0;
+    return wrapIndex(i + 1, n, wrap);
 }
 
 Texel lerp(double f, const Texel& a, const Texel& b) {
@@ -55,6 +69,52 @@ inline void blendChannels(const float* p00, const float* p10, const float* p01, 
         const double bottom = (1 - fx) * double(p01[c]) + fx * double(p11[c]);
         out[size_t(c)] = (1 - fy) * top + fy * bottom;
     }
+}
+
+/// Bilinear interpolation between the four texel centres around (s, t) on
+/// one level (width × height × channels floats, row 0 at the top).
+template <WrapMode W>
+Texel bilinearTexels(const float* texels, int width, int height, int channels, Vec2 st) {
+    // Texel centres sit at half-integers of the level's texel grid.
+    const double x = st.x * width - 0.5, y = st.y * height - 0.5;
+    const long long x0 = floorIndex(x), y0 = floorIndex(y);
+    // Beyond 2^52 (or NaN) there is no fraction left; floorIndex clamped.
+    const auto fraction = [](double c, long long i) {
+        const double f = c - double(i);
+        return f >= 0 && f < 1 ? f : 0.0;
+    };
+    const double fx = fraction(x, x0), fy = fraction(y, y0);
+    // Each column and row wrapped once for the four texels.
+    const long long xa = wrapIndex(x0, width, W), xb = wrapNextIndex(x0, xa, width, W);
+    const long long ya = wrapIndex(y0, height, W), yb = wrapNextIndex(y0, ya, height, W);
+    // The four texels' values in place (zeros outside the image under
+    // WrapMode::Black), blended channel by channel: no Texel copies.
+    static constexpr float kBlack[4] = {0, 0, 0, 0};
+    const size_t row = size_t(width) * size_t(channels);
+    const auto at = [&](long long xi, long long yi) -> const float* {
+        if constexpr (W == WrapMode::Black)
+            if (xi < 0 || yi < 0) return kBlack;
+        return texels + size_t(yi) * row + size_t(xi) * size_t(channels);
+    };
+    const float *p00 = at(xa, ya), *p10 = at(xb, ya), *p01 = at(xa, yb), *p11 = at(xb, yb);
+    Texel out{0, 0, 0, 0};
+    // The channel count as a constant (RGB and grey are the common images):
+    // the same blend per channel, unrolled.
+    switch (channels) {
+    case 3:
+        blendChannels<3>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    case 1:
+        blendChannels<1>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    case 4:
+        blendChannels<4>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    default:
+        blendChannels<2>(p00, p10, p01, p11, fx, fy, out);
+        break;
+    }
+    return out;
 }
 
 /// Gaussian falloff of the EWA filter, exp(-α r²) - exp(-α) with α = 2 as in
@@ -133,45 +193,17 @@ Texel MipMap::point(Vec2 st, WrapMode wrap) const {
 
 Texel MipMap::bilinear(int level, Vec2 st, WrapMode wrap) const {
     const Level& l = m_levels[size_t(level)];
-    // Texel centres sit at half-integers of the level's texel grid.
-    const double x = st.x * l.width - 0.5, y = st.y * l.height - 0.5;
-    const long long x0 = floorIndex(x), y0 = floorIndex(y);
-    // Beyond 2^52 (or NaN) there is no fraction left; floorIndex clamped.
-    const auto fraction = [](double c, long long i) {
-        const double f = c - double(i);
-        return f >= 0 && f < 1 ? f : 0.0;
-    };
-    const double fx = fraction(x, x0), fy = fraction(y, y0);
-    // Each column and row wrapped once for the four texels.
-    const long long xa = wrapIndex(x0, l.width, wrap), xb = wrapIndex(x0 + 1, l.width, wrap);
-    const long long ya = wrapIndex(y0, l.height, wrap), yb = wrapIndex(y0 + 1, l.height, wrap);
-    // The four texels' values in place (zeros outside the image under
-    // WrapMode::Black), blended channel by channel: the hot loop of every
-    // filtered lookup, so no Texel copies.
-    static constexpr float kBlack[4] = {0, 0, 0, 0};
-    const auto at = [&](long long xi, long long yi) {
-        return xi < 0 || yi < 0 ? kBlack
-                                : &l.texels[(size_t(yi) * size_t(l.width) + size_t(xi)) * size_t(m_channels)];
-    };
-    const float *p00 = at(xa, ya), *p10 = at(xb, ya), *p01 = at(xa, yb), *p11 = at(xb, yb);
-    Texel out{0, 0, 0, 0};
-    // The channel count as a constant (RGB and grey are the common images):
-    // the same blend per channel, unrolled.
-    switch (m_channels) {
-    case 3:
-        blendChannels<3>(p00, p10, p01, p11, fx, fy, out);
-        break;
-    case 1:
-        blendChannels<1>(p00, p10, p01, p11, fx, fy, out);
-        break;
-    case 4:
-        blendChannels<4>(p00, p10, p01, p11, fx, fy, out);
-        break;
-    default:
-        blendChannels<2>(p00, p10, p01, p11, fx, fy, out);
+    // One instance per wrap mode: the hot loop of every filtered lookup then
+    // has no wrap-mode tests, and only Black tests for texels outside.
+    switch (wrap) {
+    case WrapMode::Repeat:
+        return bilinearTexels<WrapMode::Repeat>(l.texels.data(), l.width, l.height, m_channels, st);
+    case WrapMode::Clamp:
+        return bilinearTexels<WrapMode::Clamp>(l.texels.data(), l.width, l.height, m_channels, st);
+    case WrapMode::Black:
         break;
     }
-    return out;
+    return bilinearTexels<WrapMode::Black>(l.texels.data(), l.width, l.height, m_channels, st);
 }
 
 MipMap::FootprintSides MipMap::sides(Vec2 dstdx, Vec2 dstdy) const {
@@ -199,9 +231,9 @@ double MipMap::levelOfDetail(const FootprintSides& s) {
     constexpr double kMargin = 1 + 1e-9, kTiny = 1e-290, kHuge = 1e290;
     double rho;
     if (a2 > kTiny && b2 > kTiny && a2 < kHuge && b2 < kHuge && (a2 > b2 * kMargin || b2 > a2 * kMargin))
-        rho = a2 > b2 ? std::hypot(s.ax, s.ay) : std::hypot(s.bx, s.by);
+        rho = a2 > b2 ? fastHypot(s.ax, s.ay) : fastHypot(s.bx, s.by);
     else
-        rho = std::max(std::hypot(s.ax, s.ay), std::hypot(s.bx, s.by));
+        rho = std::max(fastHypot(s.ax, s.ay), fastHypot(s.bx, s.by));
     return rho > 0 && std::isfinite(rho) ? std::log2(rho) : 0.0;
 }
 
@@ -238,7 +270,7 @@ Texel MipMap::ewa(Vec2 st, Vec2 dstdx, Vec2 dstdy, WrapMode wrap, double maxAnis
     // Axes in level-0 texels, so non-square images weigh both directions alike.
     const double w = width(0), h = height(0);
     Vec2 major{dstdx.x * w, dstdx.y * h}, minor{dstdy.x * w, dstdy.y * h};
-    double majorLen = std::hypot(major.x, major.y), minorLen = std::hypot(minor.x, minor.y);
+    double majorLen = fastHypot(major.x, major.y), minorLen = fastHypot(minor.x, minor.y);
     if (minorLen > majorLen) {
         std::swap(major, minor);
         std::swap(majorLen, minorLen);

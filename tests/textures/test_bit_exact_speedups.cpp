@@ -1,9 +1,10 @@
-// The texture path's speed-ups (tex5) against the formulas they replace, bit
-// for bit (memcmp), over ordinary values and the ends of the range (zero,
-// denormals, 1e±300, infinities, NaN): the x and y steps of a differential
-// computed in lockstep (step_pair.h), the level of detail trilinear reads
-// (no hypot or log2 where only one level is read), the one hypot of the
-// spherical and polar parameters, and LateValue.
+// The texture path's speed-ups (tex5, tex6) against the formulas they
+// replace, bit for bit (memcmp), over ordinary values and the ends of the
+// range (zero, denormals, 1e±300, infinities, NaN): the x and y steps of a
+// differential computed in lockstep (step_pair.h), the level of detail
+// trilinear reads (no hypot or log2 where only one level is read), the one
+// hypot of the spherical and polar parameters, the inlined hypot, bilinear
+// lookups far out on a tiled plane, and LateValue.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/hypot.h"
 #include "geometry/surface_parameters.h"
 #include "renderer/camera.h"
 #include "renderer/late_value.h"
@@ -315,8 +317,11 @@ TEST_CASE("bilinear blend unrolled per channel count: the per-channel formula, b
         std::vector<float> v(size_t(w * h * channels));
         for (float& f : v) f = float(r.uniform() * 4 - 1);
         const MipMap m(w, h, channels, v);
-        for (int i = 0; i < 2000; ++i) {
-            const Vec2 st{(r.uniform() - 0.25) * 2, (r.uniform() - 0.25) * 2};
+        for (int i = 0; i < 4000; ++i) {
+            // Near the image, and far out on a tiled plane: texel indices
+            // beyond 32 bits take the 64-bit remainder, the others the 32-bit one.
+            const double span = i % 4 == 3 ? 1e12 : i % 4 == 2 ? 1e6 : 1.0;
+            const Vec2 st{(r.uniform() - 0.25) * 2 * span, (r.uniform() - 0.25) * 2 * span};
             const WrapMode wrap = i % 3 == 0 ? WrapMode::Repeat : i % 3 == 1 ? WrapMode::Clamp : WrapMode::Black;
             const double x = st.x * w - 0.5, y = st.y * h - 0.5;
             const long long x0 = static_cast<long long>(std::floor(x)), y0 = static_cast<long long>(std::floor(y));
@@ -332,4 +337,35 @@ TEST_CASE("bilinear blend unrolled per channel count: the per-channel formula, b
             }
         }
     }
+}
+
+TEST_CASE("fastHypot: std::hypot's bits, for every kind of double") {
+    Values r;
+    long long checked = 0, different = 0;
+    const auto check = [&](double x, double y) {
+        ++checked;
+        if (!same(fastHypot(x, y), std::hypot(x, y))) ++different;
+    };
+    for (int i = 0; i < 200000; ++i) {
+        // Any bit pattern (every exponent, denormals, Inf, NaN), the ends of
+        // the range, ordinary values, and pairs of nearly equal size (where
+        // the correction step decides the last bit).
+        uint64_t bx = r.next(), by = r.next();
+        double x, y;
+        std::memcpy(&x, &bx, sizeof x);
+        std::memcpy(&y, &by, sizeof y);
+        check(x, y);
+        check(r.any(), r.any());
+        const double a = r.ordinary();
+        check(a, a * (1 + (r.uniform() - 0.5) * 1e-3));
+        check(a, r.ordinary());
+        check(a * 1e200, a * 1e-200);
+    }
+    CHECK(checked == 1000000);
+    CHECK(different == 0);
+    // Hand-computed: 3-4-5, and the scaling paths at the ends of the range.
+    CHECK(fastHypot(3, -4) == 5);
+    CHECK(fastHypot(3e300, 4e300) == std::hypot(3e300, 4e300));
+    CHECK(fastHypot(3e-320, 4e-320) == std::hypot(3e-320, 4e-320));
+    CHECK(std::isinf(fastHypot(std::nan(""), -std::numeric_limits<double>::infinity())));
 }
