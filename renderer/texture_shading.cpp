@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "shading/material_textures.h"
 #include "shading/normal_mapping.h"
 
 namespace raylab {
@@ -13,6 +12,8 @@ TextureShading::TextureShading(const Scene& scene, const RenderOptions& options)
     if (options.spp > 1) m_spacing = 1.0 / std::sqrt(double(options.spp));
     m_cameraSteps = scene.camera.differentialSteps(options.width, options.height, m_spacing);
     m_cameraCone = scene.camera.cone(options.width, options.height, m_spacing);
+    m_lookups.reserve(scene.materials.size());
+    for (const Material& m : scene.materials) m_lookups.emplace_back(m, scene.textures);
 }
 
 RayFootprint TextureShading::cameraFootprint(const Ray& cameraRay) const {
@@ -68,8 +69,9 @@ double TextureShading::curvature(const SurfaceInteraction& si, bool entering) {
     return entering ? k : -k;
 }
 
-SurfaceOptics TextureShading::shade(const Material& m, SurfaceInteraction& si,
+SurfaceOptics TextureShading::shade(uint32_t material, SurfaceInteraction& si,
                                     const HitFootprint& hf) const {
+    const Material& m = m_scene.materials[material];
     const TextureFilter filter = m_options.textures.filter;
     const MaterialMaps& maps = m.maps;
     const std::vector<Texture>& textures = m_scene.textures;
@@ -77,7 +79,7 @@ SurfaceOptics TextureShading::shade(const Material& m, SurfaceInteraction& si,
         si.ns = normalMappedNormal(si, textures[maps.normal], hf.coords, filter);
     if (maps.bump != MaterialMaps::kNone)
         si.ns = bumpedNormal(si, textures[maps.bump], maps.bumpScale, hf.coords, filter);
-    return evaluateOptics(m, textures, hf.coords, filter);
+    return m_lookups[material].evaluate(m, textures, hf.coords, filter);
 }
 
 RayFootprint TextureShading::reflected(const RayFootprint& fp, const HitFootprint& hf,

@@ -5,8 +5,12 @@
 // (u, v) per sample at the hit, look the material's textures up there and
 // bend the shading normal by bump and normal maps.
 
+#include <cstdint>
+#include <vector>
+
 #include "renderer/render_options.h"
 #include "renderer/scene.h"
+#include "shading/material_textures.h"
 #include "shading/ray_cone.h"
 #include "shading/ray_differential.h"
 
@@ -40,8 +44,9 @@ public:
     /// SurfaceDetail::Derivatives (uv is not read).
     HitFootprint atHit(const RayFootprint& fp, const Ray& ray, const Vec3& dir, double t,
                        const SurfaceInteraction& si) const;
-    /// The material's values at the hit; bends si.ns by its bump or normal map.
-    SurfaceOptics shade(const Material& m, SurfaceInteraction& si, const HitFootprint& hf) const;
+    /// The values of material `material` (an index into the scene's
+    /// materials) at the hit; bends si.ns by its bump or normal map.
+    SurfaceOptics shade(uint32_t material, SurfaceInteraction& si, const HitFootprint& hf) const;
     /// Footprints of the mirror and refracted rays leaving the hit: d the
     /// unit incoming direction, n the arriving-side shading normal, out the
     /// new unit direction, eta = etaI / etaT; si as for atHit, `entering` as in the integrator.
@@ -66,6 +71,7 @@ private:
     double m_spacing = 1;  ///< sample spacing in pixels
     Camera::DifferentialSteps m_cameraSteps;  ///< the camera's per-image part of its differentials
     RayCone m_cameraCone;  ///< every camera ray's cone (the same for the whole image)
+    std::vector<MaterialLookups> m_lookups;  ///< per material, its colour lookups
 };
 
 }  // namespace raylab

@@ -182,7 +182,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     if constexpr (textured(E)) {
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any())
-            optics = &texturedOptics.emplace(m_textures->shade(material, si, hitFootprint));
+            optics = &texturedOptics.emplace(m_textures->shade(si.material, si, hitFootprint));
     }
     const SurfaceOptics& m = *optics;
     // Normals on the side the ray arrives from.

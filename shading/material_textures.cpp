@@ -1,46 +1,50 @@
 #include "shading/material_textures.h"
 
-#include <array>
-
 namespace raylab {
+
+namespace {
+
+/// The textured colours, in the order of the lookup masks' bits.
+constexpr std::array<Color SurfaceOptics::*, 5> kColours = {
+    &SurfaceOptics::ka, &SurfaceOptics::kd, &SurfaceOptics::ks, &SurfaceOptics::km, &SurfaceOptics::kt};
+
+std::array<uint32_t, 5> colourMaps(const MaterialMaps& maps) {
+    return {maps.ka, maps.kd, maps.ks, maps.km, maps.kt};
+}
+
+}  // namespace
+
+MaterialLookups::MaterialLookups(const Material& m, const std::vector<Texture>& textures) {
+    const std::array<uint32_t, 5> maps = colourMaps(m.maps);
+    for (size_t i = 0; i < maps.size(); ++i) {
+        const uint32_t map = maps[i];
+        if (map == MaterialMaps::kNone) continue;
+        int group = 0;
+        while (group < m_count && m_lookups[size_t(group)].texture != map &&
+               !textures[m_lookups[size_t(group)].texture].sameColors(textures[map]))
+            ++group;
+        if (group == m_count) m_lookups[size_t(m_count++)] = Lookup{map, 0};
+        m_lookups[size_t(group)].colours = uint8_t(m_lookups[size_t(group)].colours | (1u << i));
+    }
+}
+
+SurfaceOptics MaterialLookups::evaluate(const Material& m, const std::vector<Texture>& textures,
+                                        const TextureCoords& tc, TextureFilter filter) const {
+    SurfaceOptics out = m;
+    for (int k = 0; k < m_count; ++k) {
+        const Lookup& lookup = m_lookups[size_t(k)];
+        const Color v = textures[lookup.texture].color(tc, filter);
+        for (size_t i = 0; i < kColours.size(); ++i)
+            if (lookup.colours & (1u << i)) out.*kColours[i] = out.*kColours[i] * v;
+    }
+    if (m.maps.shininess != MaterialMaps::kNone)
+        out.shininess = m.shininess * textures[m.maps.shininess].scalar(tc, filter);
+    return out;
+}
 
 SurfaceOptics evaluateOptics(const Material& m, const std::vector<Texture>& textures,
                              const TextureCoords& tc, TextureFilter filter) {
-    SurfaceOptics out = m;
-    const MaterialMaps& maps = m.maps;
-    // The colour maps looked up so far: a map that gives the same colours as
-    // one of them (MTL's map_Ka and map_Kd naming one file, a JSON material
-    // with the same texture on ka and kd) reuses its value instead of a
-    // second lookup with the same footprint.
-    // Left uninitialised (only the first `count` are read): zeroing them
-    // would cost a `rep stos` at every textured hit.
-    std::array<uint32_t, 5> done;
-    struct Value {
-        double r, g, b;
-    };
-    std::array<Value, 5> values;
-    size_t count = 0;
-    const auto modulate = [&](uint32_t map, Color& c) {
-        if (map == MaterialMaps::kNone) return;
-        const Texture& t = textures[map];
-        for (size_t i = 0; i < count; ++i)
-            if (done[i] == map || textures[done[i]].sameColors(t)) {
-                c = c * Color(values[i].r, values[i].g, values[i].b);
-                return;
-            }
-        const Color v = t.color(tc, filter);
-        done[count] = map;
-        values[count++] = Value{v.r, v.g, v.b};
-        c = c * v;
-    };
-    modulate(maps.ka, out.ka);
-    modulate(maps.kd, out.kd);
-    modulate(maps.ks, out.ks);
-    modulate(maps.km, out.km);
-    modulate(maps.kt, out.kt);
-    if (maps.shininess != MaterialMaps::kNone)
-        out.shininess = m.shininess * textures[maps.shininess].scalar(tc, filter);
-    return out;
+    return MaterialLookups(m, textures).evaluate(m, textures, tc, filter);
 }
 
 }  // namespace raylab

@@ -367,4 +367,25 @@ TEST_CASE("textured optics: equal maps on ka and kd are looked up once, with the
         CHECK(o.ks == m.ks * moved.color(tc, f));
         CHECK_FALSE(a.color(tc, f) == moved.color(tc, f));
     }
+
+    // One plan per material: kd and km share a map (another index, the same
+    // colours), kt has its own, ka and ks none; each textured colour is its
+    // constant times its own map's value, the others stay as they are.
+    Material p;
+    p.ka = Color(0.1, 0.2, 0.3);
+    p.kd = Color(0.5, 0.6, 0.7);
+    p.km = Color(0.25, 0.5, 0.75);
+    p.kt = Color(0.9, 0.9, 0.9);
+    p.maps.kd = 0;
+    p.maps.km = 1;
+    p.maps.kt = 2;
+    const MaterialLookups plan(p, textures);
+    for (TextureFilter f : {TextureFilter::Point, TextureFilter::Trilinear, TextureFilter::Anisotropic}) {
+        const SurfaceOptics o = plan.evaluate(p, textures, tc, f);
+        CHECK(o.ka == p.ka);
+        CHECK(o.ks == p.ks);
+        CHECK(o.kd == p.kd * a.color(tc, f));
+        CHECK(o.km == p.km * same.color(tc, f));
+        CHECK(o.kt == p.kt * moved.color(tc, f));
+    }
 }
