@@ -26,6 +26,14 @@ public:
         return *::new (static_cast<void*>(&m_value)) T(std::forward<Args>(args)...);
     }
 
+    /// Builds the value as make() returns it, in place: a prvalue result is
+    /// constructed directly in this storage (C++17 guaranteed elision), with
+    /// no copy of a temporary.
+    template <class Make>
+    T& emplaceFrom(Make&& make) {
+        return *::new (static_cast<void*>(&m_value)) T(std::forward<Make>(make)());
+    }
+
 private:
     union {
         T m_value;

@@ -168,7 +168,8 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     // built or zeroed on the other rays).
     [[maybe_unused]] LateValue<Footprint<E>> cameraFootprint;
     if constexpr (textured(E))
-        if (!carried) carried = &cameraFootprint.emplace(m_textures->cameraFootprint(ray, dir));
+        if (!carried)
+            carried = &cameraFootprint.emplaceFrom([&] { return m_textures->cameraFootprint(ray, dir); });
     // The hit's footprint, built in place (a default record would be zeroed
     // first at every hit). Untextured materials pass the footprint on too (a
     // plain mirror showing a textured object).
@@ -182,7 +183,8 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     if constexpr (textured(E)) {
         const Material& material = m_scene.materials[si.material];
         if (material.maps.any())
-            optics = &texturedOptics.emplace(m_textures->shade(si.material, si, hitFootprint));
+            optics = &texturedOptics.emplaceFrom(
+                [&] { return m_textures->shade(si.material, si, hitFootprint); });
     }
     const SurfaceOptics& m = *optics;
     // Normals on the side the ray arrives from.

@@ -270,6 +270,16 @@ TEST_CASE("LateValue: nothing built until emplace, then the value given") {
     CHECK(got.v[0] == 0.0);
     LateValue<double> x;
     CHECK(x.emplace(2.25) == 2.25);
+    // emplaceFrom builds the value where it lives: the address the maker's
+    // result is constructed at is the storage itself (no temporary).
+    struct Where {
+        const void* self;
+        Where() : self(this) {}
+        Where(const Where&) : self(nullptr) {}  // a copy would forget where it was built
+    };
+    LateValue<Where> w;
+    const Where& built = w.emplaceFrom([] { return Where(); });
+    CHECK(built.self == &built);
 }
 
 TEST_CASE("texel indices without std::floor: point lookups pick the texel floor(s w), floor(t h)") {
