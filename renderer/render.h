@@ -9,6 +9,7 @@
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
 #include "renderer/film.h"
+#include "renderer/huge_array.h"
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
@@ -55,7 +56,10 @@ struct WorkCounters {
 /// of the SPD procedure (of the crop window's pixels in a crop render).
 struct FrameBuffers {
     Film film;
-    std::vector<CornerSample, HugePageAllocator<CornerSample>> corners;
+    /// Zero bytes until the render writes them: no serial pass over its
+    /// megabytes before the render (huge_array.h); each corner-row item
+    /// touches its own row first, on whichever thread runs it.
+    HugeArray<CornerSample> corners;
     int cornerX0 = 0, cornerY0 = 0;  ///< full-image corner at corners[0]
     int cornerStride = 0;            ///< corners per row
 
@@ -67,6 +71,11 @@ struct FrameBuffers {
         return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
     }
 };
+
+/// Film(w, h, x0, y0, fullW, fullH), its planes allocated and filled with
+/// their defaults in parallel (TBB tasks, one per plane): the same film, but
+/// the ~100 bytes per pixel are written by every core instead of one.
+Film blankFilm(int w, int h, int x0, int y0, int fullW, int fullH);
 
 /// The rectangle a work item writes: pixels [x0,x1)×[y0,y1) of the film, or
 /// in SPD mode corners [x0,x1)×[y0,y1) of the corner grid.
