@@ -22,21 +22,13 @@
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
-#include "renderer/io/half_convert.h"
+#include "renderer/io/exr_planes.h"
 
 namespace raylab {
 
 namespace {
 
 using Imath::half;
-
-constexpr float kFloatMax = std::numeric_limits<float>::max();
-
-/// NaN -> 0, |v| > maxAbs -> ±maxAbs (this also turns ±Inf into ±maxAbs).
-float finiteClamp(float v, float maxAbs = kFloatMax) {
-    if (std::isnan(v)) return 0.f;
-    return v > maxAbs ? maxAbs : (v < -maxAbs ? -maxAbs : v);
-}
 
 /// Checks that an AOV vector is either absent (empty) or holds `expected` values.
 void checkLayerSize(const std::string& path, const char* name, size_t size, size_t expected) {
@@ -47,114 +39,11 @@ void checkLayerSize(const std::string& path, const char* name, size_t size, size
                              std::to_string(expected));
 }
 
-/// Whether v must change to be stored in a FLOAT channel: NaN or an infinity.
-bool needsFloatFix(float v) { return !std::isfinite(v); }
-
-/// The values to write for a FLOAT layer: `src` itself when it is already safe
-/// (always, for a rendered film: this saves a copy of megabytes), else a safe
-/// copy in `storage` (with `isDepth` NaN and ±inf become kNoHitDepth, "no hit"
-/// as Blender writes it; otherwise NaN -> 0 and ±inf clamped to ±FLT_MAX), or
-/// `count` copies of `fallback` when src is empty.
-const float* floatPlane(const FilmPlane& src, size_t count, float fallback, bool isDepth,
-                        FilmPlane& storage) {
-    if (src.empty()) {
-        storage.assign(count, fallback);
-        return storage.data();
-    }
-    bool safe = true;
-    for (size_t i = 0; i < count && safe; ++i) safe = !needsFloatFix(src[i]);
-    if (safe) return src.data();
-    storage.resize(count);
-    for (size_t i = 0; i < count; ++i) {
-        const float v = src[i];
-        if (isDepth && !std::isfinite(v))
-            storage[i] = kNoHitDepth;
-        else
-            storage[i] = finiteClamp(v);
-    }
-    return storage.data();
-}
-
 Imath::M44f toM44f(const Matrix44& m) {
     Imath::M44f r;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) r[i][j] = float(m[size_t(i)][size_t(j)]);
     return r;
-}
-
-/// How many Cryptomatte ranks to write: `wanted` (the sampling's bound), or
-/// more if a pixel of the film holds more objects, rounded up to a whole
-/// layer of two ranks.
-int cryptomatteRanks(const Film& film, int wanted) {
-    int ranks = std::clamp(wanted, 1, kMatteRanks);
-    for (size_t i = 0; i < film.mattes.size(); i += kMatteRanks) {
-        int used = 0;
-        for (int r = 0; r < kMatteRanks; ++r) {
-            const MatteEntry& e = film.mattes[i + size_t(r)];
-            used += e.object >= 0 && e.coverage > 0;
-        }
-        ranks = std::max(ranks, used);
-    }
-    return (ranks + 1) / 2 * 2;
-}
-
-/// The Cryptomatte planes: per pixel `ranks` (id, coverage) pairs, the
-/// ids hashed from the object names. Objects that share a name share an id,
-/// so their coverages are merged; ranks stay sorted by decreasing coverage.
-/// `ranks` is at least cryptomatteRanks(film, ...): no pixel loses a rank.
-FilmPlane cryptomattePlane(const Film& film, size_t n, const std::vector<std::string>& objectNames,
-                           int ranks) {
-    FilmPlane out(n * 2 * size_t(ranks), 0.f);
-    if (film.mattes.size() != n * kMatteRanks) return out;
-    std::vector<float> idOf;  // object index -> id float, computed once per object
-    const auto id = [&](int object) {
-        if (size_t(object) >= idOf.size()) {
-            const size_t from = idOf.size();
-            idOf.resize(size_t(object) + 1);
-            for (size_t k = from; k < idOf.size(); ++k)
-                idOf[k] = cryptomatteIdFloat(cryptomatteIdBits(matteName(objectNames, int(k))));
-        }
-        return idOf[size_t(object)];
-    };
-    struct Rank {
-        float id;
-        float coverage;
-    };
-    for (size_t i = 0; i < n; ++i) {
-        Rank merged[kMatteRanks];
-        int count = 0;
-        for (int r = 0; r < kMatteRanks; ++r) {
-            const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
-            if (e.object < 0 || !(e.coverage > 0)) continue;
-            const float value = id(e.object);
-            int k = 0;
-            while (k < count && std::memcmp(&merged[k].id, &value, sizeof value) != 0) ++k;
-            if (k == count) merged[count++] = {value, 0.f};
-            merged[k].coverage += finiteClamp(e.coverage, 1.f);
-        }
-        // Stable insertion sort by decreasing coverage: at most kMatteRanks
-        // entries, already in order unless shared names merged some
-        // (std::stable_sort allocated a buffer per pixel: 30% of the write's
-        // serial part on balls).
-        for (int a = 1; a < count; ++a)
-            for (int b = a; b > 0 && merged[b].coverage > merged[b - 1].coverage; --b)
-                std::swap(merged[b], merged[b - 1]);
-        for (int k = 0; k < count; ++k) {  // count <= ranks (cryptomatteRanks)
-            out[(i * size_t(ranks) + size_t(k)) * 2 + 0] = merged[k].id;
-            out[(i * size_t(ranks) + size_t(k)) * 2 + 1] = merged[k].coverage;
-        }
-    }
-    return out;
-}
-
-using HalfPlane = std::vector<half, HugePageAllocator<half>>;
-
-HalfPlane halfPlane(const FilmPlane& src, size_t count) {
-    HalfPlane out(count, half(0.f));
-    if (src.empty()) return out;
-    static_assert(sizeof(half) == sizeof(uint16_t), "half is 16 bits");
-    floatsToHalf(src.data(), reinterpret_cast<uint16_t*>(out.data()), count);
-    return out;
 }
 
 Imf::Compression toImf(ExrCompression c) {
@@ -213,21 +102,12 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     checkLayerSize(path, "objectId", film.objectId.size(), n);
     checkLayerSize(path, "mattes", film.mattes.size(), n * kMatteRanks);
 
-    // Planes to write; interleaved layers keep the Film's layout and use strides.
+    // Planes to write, prepared on every core the render had (exr_planes.h);
+    // interleaved layers keep the Film's layout and use strides.
     const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
-    FilmPlane rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
-    const float* rgbaF =
-        opts.floatPixels ? floatPlane(film.rgba, n * 4, 0.f, false, rgbaCopy) : nullptr;
-    HalfPlane rgbaH;
-    if (!opts.floatPixels) rgbaH = halfPlane(film.rgba, n * 4);
-    const float* z = floatPlane(film.z, n, kNoHitDepth, true, zCopy);
-    const float* distance = floatPlane(film.distance, n, kNoHitDepth, true, distanceCopy);
-    const float* normal = floatPlane(film.normal, n * 3, 0.f, false, normalCopy);
-    HalfPlane albedo = halfPlane(film.albedo, n * 3);
-    const float* objectId = floatPlane(film.objectId, n, -1.f, false, objectIdCopy);
-    const int matteRanks = cryptomatteRanks(film, opts.matteRanks);
-    const FilmPlane crypto = cryptomattePlane(film, n, opts.objectNames, matteRanks);
-
+    const ExrPlanes planes =
+        prepareExrPlanes(film, opts.floatPixels, opts.objectNames, opts.matteRanks, opts.threads);
+    const int matteRanks = planes.matteRanks;
     // A crop render is the data window inside the full image's display window.
     const Imath::Box2i dataWindow = exrDataWindow(film);
     Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
@@ -243,8 +123,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     const std::string cryptoPrefix = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/";
     std::vector<std::string> names;
     {
-        int maxObject = int(opts.objectNames.size()) - 1;
-        for (const MatteEntry& e : film.mattes) maxObject = std::max(maxObject, int(e.object));
+        const int maxObject = std::max(int(opts.objectNames.size()) - 1, planes.maxMatteObject);
+        names.reserve(size_t(maxObject + 1));
         for (int k = 0; k <= maxObject; ++k) names.push_back(matteName(opts.objectNames, k));
     }
     header.insert(cryptoPrefix + "name", Imf::StringAttribute(kCryptoObjectLayer));
@@ -268,29 +148,32 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     for (int c = 0; c < 4; ++c) {
         channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
         if (opts.floatPixels)
-            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(rgbaF + c),
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(planes.rgbaF + c),
                                                4 * sizeof(float), 4 * sizeof(float) * w));
         else
-            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF, bytes(rgbaH.data() + c),
-                                               4 * sizeof(half), 4 * sizeof(half) * w));
+            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF,
+                                            bytes(planes.rgbaH.data() + c), 4 * sizeof(half),
+                                            4 * sizeof(half) * w));
     }
     channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z", sliceIn(dataWindow, Imf::FLOAT, bytes(z), sizeof(float), sizeof(float) * w));
+    fb.insert("Z",
+              sliceIn(dataWindow, Imf::FLOAT, bytes(planes.z), sizeof(float), sizeof(float) * w));
     channels.insert("distance", Imf::Channel(Imf::FLOAT));
     fb.insert("distance",
-              sliceIn(dataWindow, Imf::FLOAT, bytes(distance), sizeof(float), sizeof(float) * w));
+              sliceIn(dataWindow, Imf::FLOAT, bytes(planes.distance), sizeof(float),
+                      sizeof(float) * w));
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
         channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(normal + c),
+        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(planes.normal + c),
                                              3 * sizeof(float), 3 * sizeof(float) * w));
         channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
-        fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(albedo.data() + c),
+        fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(planes.albedo.data() + c),
                                              3 * sizeof(half), 3 * sizeof(half) * w));
     }
     channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(objectId), sizeof(float),
+    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(planes.objectId), sizeof(float),
                                      sizeof(float) * w));
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
     const size_t cryptoStride = 2 * size_t(matteRanks) * sizeof(float);
@@ -301,8 +184,9 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         for (int c = 0; c < 4; ++c) {
             const std::string name = base + components[c];
             channels.insert(name, Imf::Channel(Imf::FLOAT));
-            fb.insert(name, sliceIn(dataWindow, Imf::FLOAT, bytes(crypto.data() + 4 * layer + c),
-                                    cryptoStride, cryptoStride * w));
+            fb.insert(name, sliceIn(dataWindow, Imf::FLOAT,
+                                    bytes(planes.crypto.data() + 4 * layer + c), cryptoStride,
+                                    cryptoStride * w));
         }
     }
 

@@ -1,0 +1,212 @@
+// prepareExrPlanes splits the EXR writer's per-pixel preparation over TBB
+// tasks: every plane must be the bytes a one-pixel-at-a-time reference gives
+// (the writer's former serial code, restated here), for 1, 2 and TBB's
+// default thread count, with NaN, Inf, out-of-half-range values, shared
+// object names and unnamed objects in the film.
+
+#include <Imath/half.h>
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/cryptomatte_id.h"
+#include "renderer/io/exr_planes.h"
+#include "renderer/io/exr_writer.h"
+#include "renderer/sampler.h"
+
+using namespace raylab;
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+uint16_t halfReference(float v) {
+    if (std::isnan(v)) v = 0.f;
+    v = std::fmax(-65504.f, std::fmin(65504.f, v));
+    return Imath::half(v).bits();
+}
+
+/// NaN -> 0, ±Inf and beyond -> ±FLT_MAX; depth: NaN and ±Inf -> 1e10.
+float floatReference(float v, bool isDepth) {
+    if (isDepth && !std::isfinite(v)) return kNoHitDepth;
+    if (std::isnan(v)) return 0.f;
+    return std::fmax(-std::numeric_limits<float>::max(),
+                     std::fmin(std::numeric_limits<float>::max(), v));
+}
+
+/// One pixel's Cryptomatte ranks, as the writer computed them serially.
+std::vector<float> cryptoReference(const Film& film, size_t i,
+                                   const std::vector<std::string>& names, int ranks) {
+    std::vector<std::pair<float, float>> merged;  // (id, coverage) in first-seen order
+    for (int r = 0; r < kMatteRanks; ++r) {
+        const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
+        if (e.object < 0 || !(e.coverage > 0)) continue;
+        const float id = cryptomatteIdFloat(cryptomatteIdBits(matteName(names, e.object)));
+        auto it = std::find_if(merged.begin(), merged.end(), [&](const auto& m) {
+            return std::memcmp(&m.first, &id, sizeof id) == 0;
+        });
+        if (it == merged.end()) it = merged.insert(merged.end(), {id, 0.f});
+        it->second += std::isnan(e.coverage) ? 0.f : std::min(e.coverage, 1.f);
+    }
+    std::stable_sort(merged.begin(), merged.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    std::vector<float> out(2 * size_t(ranks), 0.f);
+    for (size_t k = 0; k < merged.size(); ++k) {
+        out[2 * k] = merged[k].first;
+        out[2 * k + 1] = merged[k].second;
+    }
+    return out;
+}
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// 300x200 (60,000 pixels: several tasks' worth) with every kind of value.
+Film makeFilm(uint64_t seed) {
+    Film f(300, 200, 7, 11, 400, 300);
+    Pcg32 rng(seed, 1);
+    const auto uniform = [&] { return float(rng.next()) / 4294967296.f; };
+    const auto value = [&](float scale) {
+        switch (rng.next() % 16) {
+            case 0:
+                return kNaN;
+            case 1:
+                return kInf;
+            case 2:
+                return -kInf;
+            case 3:
+                return 70000.f;  // beyond half's range
+            case 4:
+                return -65520.f;  // rounds to Inf as a half unless clamped first
+            default:
+                return (uniform() - 0.25f) * scale;
+        }
+    };
+    for (float& v : f.rgba) v = value(4.f);
+    for (float& v : f.albedo) v = value(1.f);
+    for (float& v : f.normal) v = value(2.f);
+    for (float& v : f.z) v = value(100.f);
+    for (float& v : f.distance) v = value(100.f);
+    for (float& v : f.objectId) v = value(50.f);
+    const size_t pixels = size_t(f.width) * size_t(f.height);
+    for (size_t i = 0; i < pixels; ++i) {
+        const int used = int(rng.next() % (kMatteRanks + 1));
+        for (int r = 0; r < used; ++r) {
+            MatteEntry& e = f.mattes[i * kMatteRanks + size_t(r)];
+            e.object = int32_t(rng.next() % 40) - 2;  // -2, -1: unused; 30..37: no name
+            e.coverage = rng.next() % 9 == 0 ? 0.f : uniform();
+        }
+    }
+    return f;
+}
+
+/// Names with duplicates ("b" twice, "a" three times: merged ids) and gaps
+/// (empty: "object<k>"); objects 30 and up have none.
+std::vector<std::string> makeNames() {
+    std::vector<std::string> names;
+    for (int k = 0; k < 30; ++k)
+        names.push_back(k % 7 == 0    ? "a"
+                        : k % 11 == 1 ? "b"
+                        : k % 5 == 3  ? ""
+                                      : "obj" + std::to_string(k));
+    return names;
+}
+
+void checkAgainstReference(const Film& film, const std::vector<std::string>& names,
+                           bool floatPixels, int wanted, int threads) {
+    CAPTURE(floatPixels);
+    CAPTURE(wanted);
+    CAPTURE(threads);
+    const ExrPlanes p = prepareExrPlanes(film, floatPixels, names, wanted, threads);
+    const size_t n = size_t(film.width) * size_t(film.height);
+
+    int used = 0, maxObject = -1;
+    for (size_t i = 0; i < n; ++i) {
+        int u = 0;
+        for (int r = 0; r < kMatteRanks; ++r) {
+            const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
+            u += e.object >= 0 && e.coverage > 0;
+            maxObject = std::max(maxObject, int(e.object));
+        }
+        used = std::max(used, u);
+    }
+    const int ranks = (std::max(std::clamp(wanted, 1, kMatteRanks), used) + 1) / 2 * 2;
+    REQUIRE(p.matteRanks == ranks);
+    CHECK(p.maxMatteObject == maxObject);
+
+    size_t wrong = 0;
+    const auto expect = [&](bool ok) { wrong += !ok; };
+    for (size_t i = 0; i < n * 4; ++i) {
+        if (floatPixels)
+            expect(sameBits(p.rgbaF[i], floatReference(film.rgba[i], false)));
+        else
+            expect(p.rgbaH[i] == halfReference(film.rgba[i]));
+    }
+    CHECK((floatPixels ? p.rgbaH.empty() : p.rgbaF == nullptr));
+    for (size_t i = 0; i < n * 3; ++i) {
+        expect(p.albedo[i] == halfReference(film.albedo[i]));
+        expect(sameBits(p.normal[i], floatReference(film.normal[i], false)));
+    }
+    for (size_t i = 0; i < n; ++i) {
+        expect(sameBits(p.z[i], floatReference(film.z[i], true)));
+        expect(sameBits(p.distance[i], floatReference(film.distance[i], true)));
+        expect(sameBits(p.objectId[i], floatReference(film.objectId[i], false)));
+        const std::vector<float> crypto = cryptoReference(film, i, names, ranks);
+        for (int k = 0; k < 2 * ranks; ++k)
+            expect(sameBits(p.crypto[i * size_t(2 * ranks) + size_t(k)], crypto[size_t(k)]));
+    }
+    CHECK(wrong == 0);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "exr planes: every plane equals the one-pixel-at-a-time reference, for any thread count") {
+    const Film film = makeFilm(20261202);
+    const std::vector<std::string> names = makeNames();
+    for (int threads : {1, 2, 0})
+        for (bool floatPixels : {false, true})
+            for (int wanted : {1, 4})
+                checkAgainstReference(film, names, floatPixels, wanted, threads);
+}
+
+TEST_CASE("exr planes: a rendered film's FLOAT layers are lent, not copied") {
+    Film film(256, 160);  // 40,960 pixels: several tasks
+    for (size_t i = 0; i < film.z.size(); ++i) film.z[i] = float(i % 97);
+    const ExrPlanes p = prepareExrPlanes(film, true, {}, 2, 2);
+    CHECK(p.rgbaF == film.rgba.data());
+    CHECK(p.z == film.z.data());
+    CHECK(p.distance == film.distance.data());
+    CHECK(p.normal == film.normal.data());
+    CHECK(p.objectId == film.objectId.data());
+    CHECK(p.maxMatteObject == -1);  // the Film default: no coverage anywhere
+    CHECK(p.matteRanks == 2);
+    for (size_t i = 0; i < p.crypto.size(); ++i) REQUIRE(p.crypto[i] == 0.f);
+}
+
+TEST_CASE("exr planes: a film without AOV planes gets the Film defaults in every plane") {
+    Film film(130, 70);
+    film.z.clear();
+    film.distance.clear();
+    film.normal.clear();
+    film.albedo.clear();
+    film.objectId.clear();
+    film.mattes.clear();
+    const ExrPlanes p = prepareExrPlanes(film, false, {"x"}, 1, 2);
+    const size_t n = 130 * 70;
+    size_t wrong = 0;
+    for (size_t i = 0; i < n; ++i) {
+        wrong += p.z[i] != kNoHitDepth || p.distance[i] != kNoHitDepth || p.objectId[i] != -1.f;
+        wrong += p.normal[3 * i] != 0.f || p.albedo[3 * i] != 0 || p.crypto[2 * i] != 0.f;
+    }
+    CHECK(wrong == 0);
+    CHECK(p.matteRanks == 2);
+    CHECK(p.maxMatteObject == -1);
+}
