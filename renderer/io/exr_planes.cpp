@@ -1,6 +1,7 @@
 #include "renderer/io/exr_planes.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
@@ -196,7 +197,10 @@ ExrPlanes prepare(const Film& film, bool floatPixels, const std::vector<std::str
 ExrPlanes prepareExrPlanes(const Film& film, bool floatPixels,
                            const std::vector<std::string>& objectNames, int wantedRanks,
                            int threads) {
-    if (threads <= 0) return prepare(film, floatPixels, objectNames, wantedRanks);
+    // More threads than TBB runs by default is the default (a larger arena
+    // only makes TBB warn on stderr that it cannot have the workers).
+    if (threads <= 0 || threads >= tbb::info::default_concurrency())
+        return prepare(film, floatPixels, objectNames, wantedRanks);
     tbb::task_arena arena(threads);
     return arena.execute([&] { return prepare(film, floatPixels, objectNames, wantedRanks); });
 }
