@@ -197,10 +197,17 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     // OpenEXR runs compression tasks on its global pool (empty by default, i.e.
     // everything on the calling thread); the per-file count alone adds no workers.
     if (Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
+    // The file's count sets how many blocks are in flight: two per thread
+    // (OpenEXR's rule) would give each thread a second 16-row buffer with its
+    // compressor's buffers, ~1.7 MB of fresh memory on balls.nff's 25 channels
+    // (~430 page faults of ~10 us on this project's VMs) for no faster write:
+    // one per thread (rounded up to a pair) measured 5-10 ms less on balls
+    // --spd with 2 threads (docs/benchmarks.md, bar 3).
+    const int blocksInFlight = (threads + 1) / 2;  // OpenEXR keeps 2 per count
     writeFileAtomically(path, [&](const std::string& tmp) {
         // The OutputFile is closed (offset table written) when it goes out of
         // scope, before writeFileAtomically renames the file.
-        Imf::OutputFile file(tmp.c_str(), header, threads);
+        Imf::OutputFile file(tmp.c_str(), header, blocksInFlight);
         file.setFrameBuffer(fb);
         file.writePixels(film.height);  // every scan line of the data window
     }, group);
