@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "apps/commands.h"
+#include "apps/heap_pages.h"
 #include "apps/signals.h"
 #include "renderer/cancel.h"
 #include "renderer/io/did_you_mean.h"
@@ -107,6 +108,7 @@ int main(int argc, char** argv) {
     // before TBB starts its workers, which inherit the MXCSR.
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    useHugePageHeap();  // before any thread: see heap_pages.h
     installSignalHandling();
     const int code = run(std::vector<std::string>(argv + 1, argv + argc));
     claimExit();  // from here on the watchdog neither prints nor exits
