@@ -9,7 +9,7 @@ alternately (the same load for both), and the table gets a column per binary.
 
 usage: scripts/bench-texture-cost.py [--raylab build/bin/raylab] [--before OTHER_RAYLAB]
                                      [--scene scenes/textures.json] [--only SETTING ...]
-                                     [--repeats 5] [--width 320 --height 200]
+                                     [--repeats 5] [--width 320 --height 200] [--spp 1]
 """
 import argparse, json, os, re, statistics, subprocess, sys, tempfile
 
@@ -23,6 +23,7 @@ ap.add_argument("--scene", default="scenes/textures.json")
 ap.add_argument("--repeats", type=int, default=5)
 ap.add_argument("--width", type=int, default=320)
 ap.add_argument("--height", type=int, default=200)
+ap.add_argument("--spp", type=int, default=1, help="samples per pixel (footprints shrink with it)")
 a = ap.parse_args()
 
 text = open(a.scene).read()
@@ -61,14 +62,14 @@ try:
             # Alternate which binary goes first, so neither always follows the other.
             for label, exe in (binaries if r % 2 == 0 else binaries[::-1]):
                 subprocess.run([exe, "render", scene, "-o", os.path.join(out, "o.exr"),
-                                "--stats", stats, "--quiet", "--threads", "1", "--spp", "1",
+                                "--stats", stats, "--quiet", "--threads", "1", "--spp", str(a.spp),
                                 "--width", str(a.width), "--height", str(a.height)] + flags,
                                check=True, stderr=subprocess.DEVNULL)
                 times[(label, name)].append(json.load(open(stats))["time_s"]["render"])
 finally:
     os.remove(plain)
-print("%s, %dx%d, 1 spp, 1 thread, median render time of %d interleaved rounds, load average %s"
-      % (a.scene, a.width, a.height, a.repeats, " ".join("%.2f" % x for x in os.getloadavg())))
+print("%s, %dx%d, %d spp, 1 thread, median render time of %d interleaved rounds, load average %s"
+      % (a.scene, a.width, a.height, a.spp, a.repeats, " ".join("%.2f" % x for x in os.getloadavg())))
 labels = [b[0] for b in binaries]
 heads = ["%s: render ms | %s: texture share" % (l, l) if a.before else "render ms | texture share of the frame"
          for l in labels]
