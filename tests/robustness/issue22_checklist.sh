@@ -113,7 +113,7 @@ done
 # 9. Smaller defects.
 "$B" render demo.json -o w.exr "${small[@]}" 2>/dev/null
 cp w.exr w.before
-RAYLAB_TEST_STOP_AT=write "$B" render demo.json -o w.exr "${small[@]}" 2>e9 & pid=$!
+RAYLAB_TEST_STOP_AT=write RAYLAB_TEST_SIGNALED_WHILE_STOPPED=1 "$B" render demo.json -o w.exr "${small[@]}" 2>e9 & pid=$!
 for _ in $(seq 100); do [[ $(ps -o stat= -p $pid) == T* ]] && break; sleep 0.1; done
 kill -INT $pid; kill -CONT $pid; wait $pid; rc=$?
 cmp -s w.exr w.before; same=$?

@@ -178,6 +178,9 @@ int signalInPhase(const TempDir& dir, const std::vector<std::string>& args,
                   const std::string& phase, int sig, bool afterContinue = false,
                   std::vector<std::string> env = {}) {
     env.push_back("RAYLAB_TEST_STOP_AT=" + phase);
+    // Sent while stopped: raylab waits, on resuming, until a thread has run
+    // its handler (which thread is the kernel's choice), so the phase sees it.
+    if (!afterContinue) env.push_back("RAYLAB_TEST_SIGNALED_WHILE_STOPPED=1");
     Process p(args, dir.file("stdout"), dir.file("stderr"), 0, env);
     REQUIRE(p.started());
     REQUIRE(p.waitUntilStopped());
@@ -228,7 +231,8 @@ TEST_CASE("signals: stopped in the commit phase, every temporary exists, the sig
     const std::string scene = dir.write("scene.json", kSmallScene);
     Process p({"render", scene, "-o", dir.file("out.exr"), "--png", dir.file("out.png"), "--width",
                "16", "--height", "16", "--quiet"},
-              dir.file("stdout"), dir.file("stderr"), 0, {"RAYLAB_TEST_STOP_AT=commit"});
+              dir.file("stdout"), dir.file("stderr"), 0,
+              {"RAYLAB_TEST_STOP_AT=commit", "RAYLAB_TEST_SIGNALED_WHILE_STOPPED=1"});
     REQUIRE(p.waitUntilStopped());
     int temps = 0;
     for (const std::string& f : dir.files()) temps += contains(f, ".tmp.");
