@@ -53,16 +53,11 @@ struct Film {
 
     Film() = default;
     Film(int w, int h) : Film(w, h, 0, 0, w, h) {}
-    /// The w × h window at (x0, y0) of a fullW × fullH image.
-    Film(int w, int h, int x0, int y0, int fullW, int fullH)
-        : width(w), height(h), originX(x0), originY(y0), fullWidth(fullW), fullHeight(fullH),
-          rgba(size_t(w) * h * 4, 0.f),
-          z(size_t(w) * h, kNoHitDepth),
-          distance(size_t(w) * h, kNoHitDepth),
-          normal(size_t(w) * h * 3, 0.f),
-          albedo(size_t(w) * h * 3, 0.f),
-          objectId(size_t(w) * h, -1.f),
-          mattes(size_t(w) * h * kMatteRanks) {}
+    /// The w × h window at (x0, y0) of a fullW × fullH image, every plane at
+    /// its blank value (above). The ~100 bytes per pixel are written by TBB
+    /// tasks, a plane each (film.cpp): a frame's first touch of its film is
+    /// not one core's serial pass before the render.
+    Film(int w, int h, int x0, int y0, int fullW, int fullH);
 
     /// Full-image size (a film filled in by hand may leave it 0: then its own).
     int displayWidth() const { return fullWidth > 0 ? fullWidth : width; }

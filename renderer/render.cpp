@@ -3,7 +3,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -236,26 +235,10 @@ int FrameRenderer::workItemCount() const {
     return m_options.spd ? m_window.height() + 1 : m_tilesX * m_tilesY;
 }
 
-Film blankFilm(int w, int h, int x0, int y0, int fullW, int fullH) {
-    Film film(0, 0, x0, y0, fullW, fullH);
-    film.width = w;
-    film.height = h;
-    const size_t n = size_t(w) * size_t(h);
-    // The values of Film's constructor (film.h), plane by plane.
-    tbb::parallel_invoke([&] { film.rgba.assign(n * 4, 0.f); },
-                         [&] { film.z.assign(n, kNoHitDepth); },
-                         [&] { film.distance.assign(n, kNoHitDepth); },
-                         [&] { film.normal.assign(n * 3, 0.f); },
-                         [&] { film.albedo.assign(n * 3, 0.f); },
-                         [&] { film.objectId.assign(n, -1.f); },
-                         [&] { film.mattes.assign(n * kMatteRanks, MatteEntry{}); });
-    return film;
-}
-
 FrameBuffers FrameRenderer::makeBuffers() const {
     FrameBuffers b;
-    b.film = blankFilm(m_window.width(), m_window.height(), m_window.x0, m_window.y0,
-                       m_options.width, m_options.height);
+    b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
+                  m_options.height);
     if (m_options.spd) {
         b.cornerX0 = m_window.x0;
         b.cornerY0 = m_window.y0;

@@ -72,11 +72,6 @@ struct FrameBuffers {
     }
 };
 
-/// Film(w, h, x0, y0, fullW, fullH), its planes allocated and filled with
-/// their defaults in parallel (TBB tasks, one per plane): the same film, but
-/// the ~100 bytes per pixel are written by every core instead of one.
-Film blankFilm(int w, int h, int x0, int y0, int fullW, int fullH);
-
 /// The rectangle a work item writes: pixels [x0,x1)×[y0,y1) of the film, or
 /// in SPD mode corners [x0,x1)×[y0,y1) of the corner grid.
 struct WorkRegion {

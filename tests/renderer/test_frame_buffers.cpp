@@ -1,6 +1,6 @@
-// The frame's buffers as makeBuffers hands them to the render: blankFilm
-// (planes filled in parallel) is exactly Film's constructor, and the SPD
-// corner grid starts as zero bytes without a serial pass over it.
+// The frame's buffers as makeBuffers hands them to the render: Film's
+// constructor (planes filled in parallel) gives every value its blank value,
+// and the SPD corner grid starts as zero bytes without a serial pass over it.
 
 #include <doctest/doctest.h>
 
@@ -13,34 +13,37 @@ using namespace raylab;
 
 namespace {
 
-template <class Plane>
-bool sameBytes(const Plane& a, const Plane& b) {
-    return a.size() == b.size() &&
-           std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Plane::value_type)) == 0;
+/// Whether `plane` holds `count` values, each with the bytes of `blank`.
+template <class Plane, class Value>
+bool allBlank(const Plane& plane, size_t count, const Value& blank) {
+    if (plane.size() != count) return false;
+    for (const auto& v : plane)
+        if (std::memcmp(&v, &blank, sizeof blank) != 0) return false;
+    return true;
 }
 
 }  // namespace
 
-TEST_CASE("frame buffers: blankFilm is Film's constructor, byte for byte") {
+TEST_CASE("frame buffers: Film's constructor gives every plane its blank value") {
     // Small (operator new) and large (huge-page mappings) planes, a crop window.
     for (const auto& [w, h] : {std::pair{3, 2}, std::pair{512, 512}, std::pair{301, 77}}) {
         CAPTURE(w);
         CAPTURE(h);
-        const Film want(w, h, 5, 9, w + 20, h + 30);
-        const Film got = blankFilm(w, h, 5, 9, w + 20, h + 30);
-        CHECK(got.width == want.width);
-        CHECK(got.height == want.height);
-        CHECK(got.originX == want.originX);
-        CHECK(got.originY == want.originY);
-        CHECK(got.fullWidth == want.fullWidth);
-        CHECK(got.fullHeight == want.fullHeight);
-        CHECK(sameBytes(got.rgba, want.rgba));
-        CHECK(sameBytes(got.z, want.z));
-        CHECK(sameBytes(got.distance, want.distance));
-        CHECK(sameBytes(got.normal, want.normal));
-        CHECK(sameBytes(got.albedo, want.albedo));
-        CHECK(sameBytes(got.objectId, want.objectId));
-        CHECK(sameBytes(got.mattes, want.mattes));
+        const Film got(w, h, 5, 9, w + 20, h + 30);
+        const size_t n = size_t(w) * size_t(h);
+        CHECK(got.width == w);
+        CHECK(got.height == h);
+        CHECK(got.originX == 5);
+        CHECK(got.originY == 9);
+        CHECK(got.fullWidth == w + 20);
+        CHECK(got.fullHeight == h + 30);
+        CHECK(allBlank(got.rgba, n * 4, 0.f));
+        CHECK(allBlank(got.z, n, kNoHitDepth));
+        CHECK(allBlank(got.distance, n, kNoHitDepth));
+        CHECK(allBlank(got.normal, n * 3, 0.f));
+        CHECK(allBlank(got.albedo, n * 3, 0.f));
+        CHECK(allBlank(got.objectId, n, -1.f));
+        CHECK(allBlank(got.mattes, n * kMatteRanks, MatteEntry{-1, 0.f}));
     }
 }
 
