@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -62,26 +63,29 @@ EmbreeReplay::~EmbreeReplay() = default;
 size_t EmbreeReplay::tracedCount() const { return m_impl->traced; }
 
 double EmbreeReplay::run(int threads) {
-    Impl& impl = *m_impl;
-    std::fill(impl.results.begin(), impl.results.end(), uint8_t(0));
-    const RTCScene scene = impl.accel->rtcHandle();
-    const size_t count = impl.rays->size();
     const auto start = std::chrono::steady_clock::now();
-    if (threads == 1) {
-        for (size_t i = 0; i < count; ++i) impl.trace(i, scene);
-    } else {
-        std::unique_ptr<tbb::global_control> limit;
-        if (threads > 1)
-            limit = std::make_unique<tbb::global_control>(
-                tbb::global_control::max_allowed_parallelism, size_t(threads));
-        // Chunks of consecutive rays keep the recorded (pixel) coherence.
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1024),
-                          [&](const tbb::blocked_range<size_t>& range) {
-                              for (size_t i = range.begin(); i != range.end(); ++i)
-                                  impl.trace(i, scene);
-                          });
-    }
+    run(threads, 0, m_impl->rays->size());
     return secondsSince(start);
+}
+
+void EmbreeReplay::run(int threads, size_t begin, size_t end) {
+    Impl& impl = *m_impl;
+    std::fill(impl.results.begin() + std::ptrdiff_t(begin), impl.results.begin() + std::ptrdiff_t(end),
+              uint8_t(0));
+    const RTCScene scene = impl.accel->rtcHandle();
+    if (threads == 1) {
+        for (size_t i = begin; i < end; ++i) impl.trace(i, scene);
+        return;
+    }
+    std::unique_ptr<tbb::global_control> limit;
+    if (threads > 1)
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      size_t(threads));
+    // Chunks of consecutive rays keep the recorded (pixel) coherence.
+    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1024),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                          for (size_t i = range.begin(); i != range.end(); ++i) impl.trace(i, scene);
+                      });
 }
 
 const std::vector<uint8_t>& EmbreeReplay::results() const { return m_impl->results; }

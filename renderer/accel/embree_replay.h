@@ -37,6 +37,10 @@ public:
     /// \return wall-clock seconds of the loop (preparation excluded).
     double run(int threads);
 
+    /// Traces the recorded rays [begin, end) once (a slice of run's work),
+    /// setting their results; the others keep theirs.
+    void run(int threads, size_t begin, size_t end);
+
     /// Per recorded ray, from the last run: 1 = hit (intersect) or occluded
     /// (occlusion query), 0 = miss or not traced.
     const std::vector<uint8_t>& results() const;
