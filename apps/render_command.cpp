@@ -33,6 +33,7 @@
 #include "renderer/crop_window.h"
 #include "renderer/effects.h"
 #include "renderer/first_look.h"
+#include "renderer/huge_page_allocator.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_writer.h"
@@ -517,6 +518,10 @@ int renderCommand(const std::vector<std::string>& args) {
 
     const EffectSet effects = analyseEffects(scene, options);
     bool warnedCap = false;
+    // Every frame of a sequence asks for the same buffers: the next one
+    // takes back the mappings the last one freed instead of faulting in
+    // fresh pages.
+    const huge_pages::ReuseScope reuseFrameBuffers;
     for (int frame = frames.first; frame <= frames.last; ++frame) {
         // Sequences: out.exr -> out_0001.exr, ... (the BVH is built once).
         const auto output = [&](const std::string& file) {

@@ -4,7 +4,8 @@
 // std::vector cannot give this: malloc's mappings are not 2 MiB-aligned, so
 // their first and last partial 2 MiB fault 4 KiB at a time (up to 1024
 // faults of ~10-20 µs each on this project's VMs), and resize() writes every
-// element once more in one thread. Fresh mappings are zero already.
+// element once more in one thread. Fresh mappings are zero already (a
+// mapping parked by huge_pages::ReuseScope is zeroed when taken back).
 
 #include <cstddef>
 #include <cstring>
@@ -26,9 +27,11 @@ public:
     explicit HugeArray(size_t n) : m_size(n) {
         if (n == 0) return;
         if (n > size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
-        m_data = static_cast<T*>(huge_pages::allocate(n * sizeof(T)));
-        // Only operator new's small blocks are not fresh (zero) pages.
-        if (n * sizeof(T) < huge_pages::kThreshold) std::memset(static_cast<void*>(m_data), 0, n * sizeof(T));
+        bool fresh = false;
+        m_data = static_cast<T*>(huge_pages::allocate(n * sizeof(T), &fresh));
+        // Fresh pages are zero already; operator new's small blocks and
+        // mappings parked by a ReuseScope are not.
+        if (!fresh) std::memset(static_cast<void*>(m_data), 0, n * sizeof(T));
     }
     ~HugeArray() { release(); }
     HugeArray(HugeArray&& o) noexcept : m_data(o.m_data), m_size(o.m_size) {

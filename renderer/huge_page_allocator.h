@@ -12,8 +12,6 @@
 // kernel has no huge page at hand it falls back to small pages: the hint can
 // only help. Small requests go to operator new as usual.
 
-#include <sys/mman.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -31,21 +29,22 @@ constexpr size_t kThreshold = kHugePage / 2;
 
 inline size_t roundUp(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
-inline void* allocate(size_t bytes) {
-    if (bytes < kThreshold) return ::operator new(bytes);
-    const size_t size = roundUp(bytes);
-    // Over-allocate by one huge page, then cut the mapping down to the
-    // 2 MiB-aligned part: only aligned 2 MiB ranges can become huge pages.
-    const size_t mapped = size + kHugePage;
-    void* raw = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (raw == MAP_FAILED) throw std::bad_alloc();
-    const uintptr_t start = reinterpret_cast<uintptr_t>(raw);
-    const uintptr_t aligned = (start + kHugePage - 1) & ~uintptr_t(kHugePage - 1);
-    if (aligned > start) munmap(raw, aligned - start);
-    const uintptr_t end = start + mapped, alignedEnd = aligned + size;
-    if (end > alignedEnd) munmap(reinterpret_cast<void*>(alignedEnd), end - alignedEnd);
-    void* p = reinterpret_cast<void*>(aligned);
-    madvise(p, size, MADV_HUGEPAGE);  // a hint: failure only means small pages
+/// A 2 MiB-aligned mapping of `size` bytes (a multiple of kHugePage) with the
+/// huge-page hint (huge_page_allocator.cpp). `fresh` tells whether its pages
+/// are new (all zero) or a parked mapping taken back (any content).
+void* mapAligned(size_t size, bool& fresh);
+/// Unmaps a mapAligned mapping, or parks it while a ReuseScope is open.
+void unmapAligned(void* p, size_t size);
+
+/// `fresh`, when given, is set to whether the memory is known to be zero.
+inline void* allocate(size_t bytes, bool* fresh = nullptr) {
+    if (bytes < kThreshold) {
+        if (fresh) *fresh = false;
+        return ::operator new(bytes);
+    }
+    bool zero = false;
+    void* p = mapAligned(roundUp(bytes), zero);
+    if (fresh) *fresh = zero;
     return p;
 }
 
@@ -54,8 +53,28 @@ inline void deallocate(void* p, size_t bytes) {
     if (bytes < kThreshold)
         ::operator delete(p);
     else
-        munmap(p, roundUp(bytes));
+        unmapAligned(p, roundUp(bytes));
 }
+
+/// While one is alive, a freed large buffer is parked instead of unmapped,
+/// and the next request of the same size takes it back. For a process that
+/// renders again and again (`raylab bench`, `render --frames`): each frame
+/// asks for the same buffers, and fresh pages cost a fault and the kernel's
+/// zeroing each (here ~1.6 ms per MB when the host has to supply the
+/// memory: docs/benchmarks.md, bar 2). A request no parked mapping fits
+/// releases them all first, so parked memory is only ever what the previous
+/// frame had; the last scope to close releases the rest. Scopes nest; any
+/// thread may allocate and free inside one.
+class ReuseScope {
+public:
+    ReuseScope();
+    ~ReuseScope();
+    ReuseScope(const ReuseScope&) = delete;
+    ReuseScope& operator=(const ReuseScope&) = delete;
+};
+
+/// Bytes parked now (for tests and statistics).
+size_t parkedBytes();
 
 }  // namespace huge_pages
 

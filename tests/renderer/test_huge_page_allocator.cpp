@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -62,4 +63,53 @@ TEST_CASE("HugeArray: zero bytes at any size, 2 MiB-aligned when large, moves an
     }
     HugeArray<double> none(0);
     CHECK(none.empty());
+}
+
+TEST_CASE("ReuseScope: a freed mapping serves the next request of its size, zeroed for a HugeArray") {
+    const size_t bytes = size_t(3) << 20;  // rounds to two huge pages
+    const size_t n = bytes / sizeof(uint64_t);
+    REQUIRE(huge_pages::parkedBytes() == 0);
+    {
+        // Without a scope a freed mapping is unmapped at once.
+        HugeArray<uint64_t> a(n);
+        a.release();
+        CHECK(huge_pages::parkedBytes() == 0);
+    }
+    {
+        const huge_pages::ReuseScope scope;
+        HugeArray<uint64_t> a(n);
+        const uint64_t* first = a.data();
+        for (size_t i = 0; i < n; ++i) a[i] = i + 1;  // leave every byte non-zero
+        a.release();
+        CHECK(huge_pages::parkedBytes() == huge_pages::roundUp(bytes));
+
+        // The same rounded size (a little smaller here) takes it back, zeroed.
+        HugeArray<uint64_t> b(n - 1000);
+        CHECK(b.data() == first);
+        CHECK(huge_pages::parkedBytes() == 0);
+        uint64_t nonZero = 0;
+        for (size_t i = 0; i < b.size(); ++i) nonZero += b[i] != 0;
+        CHECK(nonZero == 0);
+
+        // A vector takes it back too (its elements are constructed anyway).
+        b.release();
+        {
+            std::vector<uint64_t, HugePageAllocator<uint64_t>> v(n, 7);
+            CHECK(v.data() == first);
+            CHECK(std::count(v.begin(), v.end(), uint64_t(7)) == std::ptrdiff_t(n));
+        }
+        CHECK(huge_pages::parkedBytes() == huge_pages::roundUp(bytes));
+
+        // A request of another size releases what is parked: the memory held
+        // is never more than the last frame's.
+        HugeArray<uint64_t> other(n * 3);
+        CHECK(huge_pages::parkedBytes() == 0);
+        other.release();
+        CHECK(huge_pages::parkedBytes() == huge_pages::roundUp(n * 3 * sizeof(uint64_t)));
+        {
+            const huge_pages::ReuseScope nested;  // scopes nest
+        }
+        CHECK(huge_pages::parkedBytes() == huge_pages::roundUp(n * 3 * sizeof(uint64_t)));
+    }
+    CHECK(huge_pages::parkedBytes() == 0);  // the last scope released the rest
 }

@@ -20,6 +20,7 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
+#include "renderer/huge_page_allocator.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/json_string.h"
@@ -159,6 +160,9 @@ Row measureScene(Scene& scene, const Settings& s, std::string family, std::strin
     const RenderOptions options = resolveRenderOptions(scene, o);
     const EffectSet effects = analyseEffects(scene, options);
     const size_t pixels = size_t(options.width) * size_t(options.height);
+
+    // Repeated frames reuse their buffers' mappings (as render --frames does).
+    const huge_pages::ReuseScope reuseFrameBuffers;
 
     // Embree: full frames through the renderer, after one warm-up frame.
     {

@@ -8,6 +8,7 @@
 
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
+#include "renderer/huge_page_allocator.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
@@ -36,6 +37,7 @@ int runEffectsBench(const EffectsBenchOptions& options, std::ostream& out) {
 
         std::vector<double> ts, tg;
         RenderResult rs, rg;
+        const huge_pages::ReuseScope reuseFrameBuffers;  // as render --frames does
         for (int run = 0; run < std::max(1, options.runs); ++run) {
             rs = render(scene, *accel, special, es);  // interleaved: drift hits both alike
             rg = render(scene, *accel, general, eg);
