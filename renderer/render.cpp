@@ -312,9 +312,18 @@ void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
         const CornerSample &a = top[k], &b = top[k + 1], &c = bottom[k], &d = bottom[k + 1];
         const size_t i = film.index(x, y);
         if (m_options.wantAovs) {
-            MatteCoverage mattes;
-            for (const CornerSample* s : {&a, &b, &c, &d}) mattes.add(s->objectId, 0.25);
-            mattes.store(&film.mattes[i * kMatteRanks]);
+            MatteEntry* out = &film.mattes[i * kMatteRanks];
+            if (a.objectId == b.objectId && a.objectId == c.objectId && a.objectId == d.objectId) {
+                // Inside one object (or the background): what MatteCoverage
+                // gives for four equal corners (0.25 * 4 is exactly 1), without
+                // building one; most pixels are such.
+                out[0] = a.objectId >= 0 ? MatteEntry{a.objectId, 1.0f} : MatteEntry{};
+                for (int r = 1; r < kMatteRanks; ++r) out[r] = MatteEntry{};
+            } else {
+                MatteCoverage mattes;
+                for (const CornerSample* s : {&a, &b, &c, &d}) mattes.add(s->objectId, 0.25);
+                mattes.store(out);
+            }
         }
         storePixel(film, i, (a.c + b.c + c.c + d.c) * 0.25, 0.25 * (a.hit + b.hit + c.hit + d.hit),
                    m_options.alpha);

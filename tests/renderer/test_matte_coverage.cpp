@@ -1,0 +1,80 @@
+// A pixel's object coverage for the Cryptomatte layers (MatteCoverage):
+// ranks by coverage, ties by object index, unused ranks {-1, 0}, values
+// checked against hand-computed fractions.
+
+#include <doctest/doctest.h>
+
+#include <array>
+
+#include "renderer/film.h"
+#include "renderer/matte_coverage.h"
+
+using namespace raylab;
+
+namespace {
+
+std::array<MatteEntry, kMatteRanks> stored(const MatteCoverage& m, double divisor = 1.0) {
+    std::array<MatteEntry, kMatteRanks> out;
+    for (MatteEntry& e : out) e = MatteEntry{7, 7.f};  // overwritten, every rank
+    m.store(out.data(), divisor);
+    return out;
+}
+
+void checkUnused(const std::array<MatteEntry, kMatteRanks>& out, int from) {
+    for (int r = from; r < kMatteRanks; ++r) {
+        CAPTURE(r);
+        CHECK(out[r].object == -1);
+        CHECK(out[r].coverage == 0.f);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("MatteCoverage: no object, one object, two objects, ties, a divisor") {
+    MatteCoverage none;
+    none.add(-1, 0.25);  // a miss adds nothing
+    checkUnused(stored(none), 0);
+
+    MatteCoverage one;
+    for (int k = 0; k < 4; ++k) one.add(5, 0.25);
+    auto out = stored(one);
+    CHECK(out[0].object == 5);
+    CHECK(out[0].coverage == 1.0f);  // 0.25 four times is exactly 1
+    checkUnused(out, 1);
+    out = stored(one, 4.0);
+    CHECK(out[0].coverage == 0.25f);
+
+    MatteCoverage two;
+    two.add(9, 0.25);
+    two.add(2, 0.25);
+    two.add(9, 0.25);
+    two.add(-1, 0.25);  // the background's quarter is in no rank
+    out = stored(two);
+    CHECK(out[0].object == 9);
+    CHECK(out[0].coverage == 0.5f);
+    CHECK(out[1].object == 2);
+    CHECK(out[1].coverage == 0.25f);
+    checkUnused(out, 2);
+
+    MatteCoverage tie;
+    tie.add(8, 1);
+    tie.add(3, 1);
+    out = stored(tie, 2.0);
+    CHECK(out[0].object == 3);  // equal coverage: the lower index first
+    CHECK(out[1].object == 8);
+    CHECK(out[0].coverage == 0.5f);
+    CHECK(out[1].coverage == 0.5f);
+    checkUnused(out, 2);
+}
+
+TEST_CASE("MatteCoverage: more objects than inline slots and ranks keep the largest") {
+    // Objects 0..11 with weights 1..12: the six ranks are objects 11..6.
+    MatteCoverage many;
+    for (int object = 0; object < 12; ++object) many.add(object, double(object + 1));
+    const auto out = stored(many, 78.0);  // 1 + 2 + ... + 12
+    for (int r = 0; r < kMatteRanks; ++r) {
+        CAPTURE(r);
+        CHECK(out[r].object == 11 - r);
+        CHECK(out[r].coverage == float(double(12 - r) / 78.0));
+    }
+}
