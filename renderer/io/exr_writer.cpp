@@ -16,13 +16,13 @@
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_planes.h"
+#include "renderer/io/exr_string_attribute.h"
 
 namespace raylab {
 
@@ -115,7 +115,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     header.compression() = toImf(opts.compression);
     // Not stored in the file (any zlib reads any level): the speed/size trade.
     header.zipCompressionLevel() = kExrZipLevel;
-    if (!opts.software.empty()) header.insert("software", Imf::StringAttribute(opts.software));
+    if (!opts.software.empty()) header.insert("software", ExrStringAttribute(opts.software));
     if (opts.camera) {
         header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
         header.insert("worldToNDC", Imf::M44fAttribute(toM44f(opts.camera->worldToNDC)));
@@ -127,18 +127,18 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         names.reserve(size_t(maxObject + 1));
         for (int k = 0; k <= maxObject; ++k) names.push_back(matteName(opts.objectNames, k));
     }
-    header.insert(cryptoPrefix + "name", Imf::StringAttribute(kCryptoObjectLayer));
-    header.insert(cryptoPrefix + "hash", Imf::StringAttribute("MurmurHash3_32"));
-    header.insert(cryptoPrefix + "conversion", Imf::StringAttribute("uint32_to_float32"));
-    header.insert(cryptoPrefix + "manifest", Imf::StringAttribute(cryptomatteManifest(names)));
+    header.insert(cryptoPrefix + "name", ExrStringAttribute(kCryptoObjectLayer));
+    header.insert(cryptoPrefix + "hash", ExrStringAttribute("MurmurHash3_32"));
+    header.insert(cryptoPrefix + "conversion", ExrStringAttribute("uint32_to_float32"));
+    header.insert(cryptoPrefix + "manifest", ExrStringAttribute(cryptomatteManifest(names)));
     if (!opts.settings.empty())
-        header.insert("raylab/settings", Imf::StringAttribute(opts.settings));
-    if (!opts.alpha.empty()) header.insert("raylab/alpha", Imf::StringAttribute(opts.alpha));
+        header.insert("raylab/settings", ExrStringAttribute(opts.settings));
+    if (!opts.alpha.empty()) header.insert("raylab/alpha", ExrStringAttribute(opts.alpha));
     header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
     header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
     if (!opts.scenePath.empty())
-        header.insert("raylab/scene", Imf::StringAttribute(opts.scenePath));
-    if (!opts.accel.empty()) header.insert("raylab/accel", Imf::StringAttribute(opts.accel));
+        header.insert("raylab/scene", ExrStringAttribute(opts.scenePath));
+    if (!opts.accel.empty()) header.insert("raylab/accel", ExrStringAttribute(opts.accel));
     if (opts.frame != 0) header.insert("raylab/frame", Imf::IntAttribute(opts.frame));
 
     Imf::ChannelList& channels = header.channels();
