@@ -1,9 +1,5 @@
 #include "renderer/accel/embree_replay.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -73,19 +69,7 @@ void EmbreeReplay::run(int threads, size_t begin, size_t end) {
     std::fill(impl.results.begin() + std::ptrdiff_t(begin), impl.results.begin() + std::ptrdiff_t(end),
               uint8_t(0));
     const RTCScene scene = impl.accel->rtcHandle();
-    if (threads == 1) {
-        for (size_t i = begin; i < end; ++i) impl.trace(i, scene);
-        return;
-    }
-    std::unique_ptr<tbb::global_control> limit;
-    if (threads > 1)
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      size_t(threads));
-    // Chunks of consecutive rays keep the recorded (pixel) coherence.
-    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1024),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                          for (size_t i = range.begin(); i != range.end(); ++i) impl.trace(i, scene);
-                      });
+    forEachReplayedRay(threads, begin, end, [&](size_t i) { impl.trace(i, scene); });
 }
 
 const std::vector<uint8_t>& EmbreeReplay::results() const { return m_impl->results; }

@@ -8,6 +8,11 @@
 // ray for the analytic shapes), so the work inside Embree is the renderer's.
 // Embree types stay in the .cpp: this header is safe to include anywhere.
 
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -16,6 +21,26 @@
 #include "renderer/accel/ray_recorder.h"
 
 namespace raylab {
+
+/// Calls one(i) for every recorded ray i in [begin, end), threaded as a
+/// replay is: threads 1 = a plain loop on the calling thread; n > 1 = a TBB
+/// loop limited to n threads; 0 = a TBB loop on all cores. Chunks of
+/// consecutive rays keep the recorded (pixel) coherence.
+template <class F>
+void forEachReplayedRay(int threads, size_t begin, size_t end, F&& one) {
+    if (threads == 1) {
+        for (size_t i = begin; i < end; ++i) one(i);
+        return;
+    }
+    std::unique_ptr<tbb::global_control> limit;
+    if (threads > 1)
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      size_t(threads));
+    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1024),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                          for (size_t i = range.begin(); i != range.end(); ++i) one(i);
+                      });
+}
 
 class EmbreeReplay {
 public:

@@ -1,9 +1,5 @@
 #include "tools/bench/limit_bench.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -36,8 +32,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// The rays' answers through the Accelerator interface (what the integrator
-/// calls: conversion, query, decoding), with the same threading as
-/// EmbreeReplay.
+/// calls: conversion, query, decoding), threaded as EmbreeReplay is.
 class InterfaceReplay {
 public:
     InterfaceReplay(const Accelerator& accel, const std::vector<RecordedRay>& rays)
@@ -50,18 +45,7 @@ public:
             m_results[i] = r.occlusion ? m_accel.occluded(r.ray, r.tMin, r.tMax)
                                        : m_accel.intersect(r.ray, r.tMin, r.tMax).has_value();
         };
-        if (threads == 1) {
-            for (size_t i = begin; i < end; ++i) one(i);
-            return;
-        }
-        std::unique_ptr<tbb::global_control> limit;
-        if (threads > 1)
-            limit = std::make_unique<tbb::global_control>(
-                tbb::global_control::max_allowed_parallelism, size_t(threads));
-        tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1024),
-                          [&](const tbb::blocked_range<size_t>& range) {
-                              for (size_t i = range.begin(); i != range.end(); ++i) one(i);
-                          });
+        forEachReplayedRay(threads, begin, end, one);
     }
 
     const std::vector<uint8_t>& results() const { return m_results; }
