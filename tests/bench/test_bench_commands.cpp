@@ -88,6 +88,9 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     CHECK(doc.find("\"replay_disagreements\": 0") != std::string::npos);
     // demo.json at spp 4: 24·18·4 camera rays.
     CHECK(doc.find("\"camera\": 1728") != std::string::npos);
+    // Issue 20's bar without --spd (the demo's), named in the report.
+    CHECK(doc.find("\"bar\": 0.7,") != std::string::npos);
+    CHECK(report.find("of bare Embree (bar: >= 70%)") != std::string::npos);
 
     o.outPath = csv;
     o.threads = 2;
@@ -96,4 +99,12 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     const std::string table = test::readFile(csv);
     CHECK(table.rfind("scene,width,height,spd,threads", 0) == 0);
     CHECK(std::count(table.begin(), table.end(), '\n') == 2);  // header + one row
+
+    // With the SPD procedure the bar is issue 20's balls --spd one.
+    o.spd = true;
+    o.outPath = json;
+    std::ostringstream out3;
+    CHECK(runLimitBench(o, out3) == 0);
+    CHECK(test::readFile(json).find("\"bar\": 0.8,") != std::string::npos);
+    CHECK(out3.str().find("of bare Embree (bar with --spd: >= 80%)") != std::string::npos);
 }
