@@ -15,6 +15,7 @@
 
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/exr_writer.h"
+#include "renderer/io/finite_clamp.h"
 #include "renderer/io/half_convert.h"
 
 namespace raylab {
@@ -26,12 +27,6 @@ namespace {
 constexpr size_t kGrain = 8192;
 
 constexpr float kFloatMax = std::numeric_limits<float>::max();
-
-/// NaN -> 0, |v| > maxAbs -> ±maxAbs (this also turns ±Inf into ±maxAbs).
-float finiteClamp(float v, float maxAbs = kFloatMax) {
-    if (std::isnan(v)) return 0.f;
-    return v > maxAbs ? maxAbs : (v < -maxAbs ? -maxAbs : v);
-}
 
 /// Calls body(begin, end) over [0, count) in TBB tasks.
 template <class Body>
@@ -67,7 +62,7 @@ const float* floatPlane(const FilmPlane& src, size_t count, float fallback, bool
     forRanges(count, kGrain * 4, [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
             const float v = src[i];
-            storage[i] = isDepth && !std::isfinite(v) ? kNoHitDepth : finiteClamp(v);
+            storage[i] = isDepth && !std::isfinite(v) ? kNoHitDepth : finiteClamp(v, kFloatMax);
         }
     });
     return storage.data();

@@ -8,6 +8,8 @@
 
 #include <Imath/half.h>
 
+#include "renderer/io/finite_clamp.h"
+
 namespace raylab {
 
 namespace {
@@ -16,10 +18,7 @@ constexpr float kHalfMax = 65504.0f;  // largest finite half
 
 /// NaN -> 0, |v| > 65504 -> ±65504. Clamped before rounding because Imath
 /// rounds to nearest: anything from 65520 up would become Inf.
-float safeForHalf(float v) {
-    if (std::isnan(v)) return 0.f;
-    return v > kHalfMax ? kHalfMax : (v < -kHalfMax ? -kHalfMax : v);
-}
+float safeForHalf(float v) { return finiteClamp(v, kHalfMax); }
 
 __attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* src, uint16_t* dst,
                                                            size_t n) {

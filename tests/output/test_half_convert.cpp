@@ -11,6 +11,7 @@
 
 #include <Imath/half.h>
 
+#include "renderer/io/finite_clamp.h"
 #include "renderer/io/half_convert.h"
 #include "support/float_bits.h"
 
@@ -87,4 +88,20 @@ TEST_CASE("half conversion: every float of one binade around 1 and the subnormal
     for (uint32_t m = 0; m < (1u << 23); m += 3) v.push_back(floatFromBits(0x38000000u | m));  // ~2^-15
     if (v.size() % 2 == 0) v.push_back(2.f);
     checkAll(v);
+}
+
+TEST_CASE("finiteClamp: the one rule that makes a value safe for a channel") {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    constexpr float fmax = std::numeric_limits<float>::max();
+    CHECK(finiteClamp(std::numeric_limits<float>::quiet_NaN(), 65504.f) == 0.f);
+    CHECK(finiteClamp(inf, 65504.f) == 65504.f);
+    CHECK(finiteClamp(-inf, 65504.f) == -65504.f);
+    CHECK(finiteClamp(65520.f, 65504.f) == 65504.f);  // would round to Inf as a half
+    CHECK(finiteClamp(-1e30f, 65504.f) == -65504.f);
+    CHECK(finiteClamp(65504.f, 65504.f) == 65504.f);
+    CHECK(finiteClamp(-3.25f, 65504.f) == -3.25f);
+    CHECK(finiteClamp(inf, fmax) == fmax);
+    CHECK(finiteClamp(1e38f, fmax) == 1e38f);
+    CHECK(finiteClamp(1.5f, 1.f) == 1.f);  // a Cryptomatte coverage
+    CHECK(std::signbit(finiteClamp(-0.f, 1.f)));  // -0 stays -0: the bits are the input's
 }
