@@ -60,9 +60,10 @@ public:
             // Most pixels see one object or none: nothing to sort. (Bit for
             // bit the general path's output; 60% of finishRow's instructions
             // on balls --spd went to the copy and sort below.)
-            out[0] = m_count == 1 ? MatteEntry{m_inline[0].object, float(m_inline[0].weight / divisor)}
-                                  : MatteEntry{};
-            for (size_t r = 1; r < size_t(kMatteRanks); ++r) out[r] = MatteEntry{};
+            if (m_count == 1)
+                storeSingle(out, m_inline[0].object, float(m_inline[0].weight / divisor));
+            else
+                storeSingle(out, -1, 0.f);
             return;
         }
         if (m_spill.empty()) {  // no allocation on the common path
@@ -79,6 +80,14 @@ public:
         all.insert(all.end(), m_spill.begin(), m_spill.end());
         std::sort(all.begin(), all.end(), before);
         write(all.data(), all.size());
+    }
+
+    /// What store() writes for a pixel whose coverage is all `object`'s
+    /// (`coverage` of it; object < 0: no object): without gathering one,
+    /// for callers that know it already (an SPD pixel with four equal corners).
+    static void storeSingle(MatteEntry* out, int object, float coverage) {
+        out[0] = object >= 0 ? MatteEntry{object, coverage} : MatteEntry{};
+        for (size_t r = 1; r < size_t(kMatteRanks); ++r) out[r] = MatteEntry{};
     }
 
 private:

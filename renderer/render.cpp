@@ -314,11 +314,9 @@ void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
         if (m_options.wantAovs) {
             MatteEntry* out = &film.mattes[i * kMatteRanks];
             if (a.objectId == b.objectId && a.objectId == c.objectId && a.objectId == d.objectId) {
-                // Inside one object (or the background): what MatteCoverage
-                // gives for four equal corners (0.25 * 4 is exactly 1), without
-                // building one; most pixels are such.
-                out[0] = a.objectId >= 0 ? MatteEntry{a.objectId, 1.0f} : MatteEntry{};
-                for (int r = 1; r < kMatteRanks; ++r) out[r] = MatteEntry{};
+                // Inside one object (or the background), as most pixels are:
+                // four corners of 0.25 sum to exactly 1.
+                MatteCoverage::storeSingle(out, a.objectId, 1.0f);
             } else {
                 MatteCoverage mattes;
                 for (const CornerSample* s : {&a, &b, &c, &d}) mattes.add(s->objectId, 0.25);

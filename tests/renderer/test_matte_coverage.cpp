@@ -78,3 +78,27 @@ TEST_CASE("MatteCoverage: more objects than inline slots and ranks keep the larg
         CHECK(out[r].coverage == float(double(12 - r) / 78.0));
     }
 }
+
+TEST_CASE("MatteCoverage::storeSingle writes what store() gives for one object or none") {
+    // An SPD pixel whose four corners hit object 5: four quarters.
+    MatteCoverage four;
+    for (int k = 0; k < 4; ++k) four.add(5, 0.25);
+    std::array<MatteEntry, kMatteRanks> direct;
+    for (MatteEntry& e : direct) e = MatteEntry{7, 7.f};
+    MatteCoverage::storeSingle(direct.data(), 5, 1.0f);
+    const auto gathered = stored(four);
+    for (int r = 0; r < kMatteRanks; ++r) {
+        CAPTURE(r);
+        CHECK(direct[r].object == gathered[r].object);
+        CHECK(direct[r].coverage == gathered[r].coverage);
+    }
+    CHECK(direct[0].object == 5);
+    CHECK(direct[0].coverage == 1.f);
+    checkUnused(direct, 1);
+    // Four background corners: no object at all.
+    MatteCoverage none;
+    for (int k = 0; k < 4; ++k) none.add(-1, 0.25);
+    MatteCoverage::storeSingle(direct.data(), -1, 1.0f);
+    checkUnused(direct, 0);
+    checkUnused(stored(none), 0);
+}
