@@ -41,6 +41,7 @@
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "renderer/io/errors.h"
+#include "renderer/io/plain_decimal.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/io/shape_factory.h"
 #include "renderer/io/text_file.h"
@@ -314,12 +315,17 @@ private:
                                          std::string(t) + "' on line " +
                                          std::to_string(m_tok.tokenLine()) + start + extraHint());
         }
-        double v = 0;
         const char* first = t.data();
         const char* last = t.data() + t.size();
         if (*first == '+' && t.size() > 1 && first[1] != '-') ++first;  // from_chars rejects '+'
-        const auto [ptr, ec] = std::from_chars(first, last, v);
         const int line = m_tok.tokenLine();
+        if (const std::optional<double> plain = plainDecimal(first, last)) {
+            ++m_numbersRead;
+            m_lastNumberLine = line;
+            return *plain;
+        }
+        double v = 0;
+        const auto [ptr, ec] = std::from_chars(first, last, v);
         if (ptr != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
             failAt(line, entityName() + ": expected a number for " + what + ", got " + quoted(t));
         if (ec == std::errc::result_out_of_range) {

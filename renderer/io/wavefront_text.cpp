@@ -1,5 +1,7 @@
 #include "renderer/io/wavefront_text.h"
 
+#include "renderer/io/plain_decimal.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -63,6 +65,7 @@ std::optional<double> parseNumber(std::string_view token) {
     const char* last = first + token.size();
     // from_chars takes no '+' (and reads "nan" and "inf", refused below).
     if (first < last && *first == '+' && first + 1 < last && first[1] != '-') ++first;
+    if (const std::optional<double> plain = plainDecimal(first, last)) return plain;
     double v = 0;
     const auto [ptr, ec] = std::from_chars(first, last, v);
     if (ptr != last || token.empty()) return std::nullopt;

@@ -1,0 +1,146 @@
+// The scene readers' numbers: plain decimals ("%f", nearly every number an
+// exporter writes) are read by Clinger's fast path (plain_decimal.h), every
+// other form by from_chars. parseNumber (OBJ, MTL) and the NFF reader must
+// give the same double, bit for bit, and refuse the same tokens as with
+// from_chars alone: checked on hand-picked edge cases and two million random
+// tokens (plainDecimal directly, and parseNumber), and on an NFF file.
+
+#include <doctest/doctest.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+
+#include "geometry/sphere.h"
+#include "renderer/io/plain_decimal.h"
+#include "renderer/io/scene_loader.h"
+#include "renderer/io/wavefront_text.h"
+#include "renderer/sampler.h"
+#include "renderer/scene.h"
+
+using namespace raylab;
+
+namespace {
+
+/// What parseNumber gave before the fast path: from_chars alone, with its
+/// rules ('+' taken, NaN and Inf and overflow refused, underflow to 0).
+std::optional<double> reference(const std::string& token) {
+    const char* first = token.data();
+    const char* last = first + token.size();
+    if (first < last && *first == '+' && first + 1 < last && first[1] != '-') ++first;
+    double v = 0;
+    const auto [ptr, ec] = std::from_chars(first, last, v);
+    if (ptr != last || token.empty()) return std::nullopt;
+    if (ec == std::errc::result_out_of_range) {
+        const double approx = std::strtod(token.c_str(), nullptr);
+        if (!(std::fabs(approx) < 1.0)) return std::nullopt;
+        return approx;
+    }
+    if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+bool sameResult(const std::optional<double>& a, const std::optional<double>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || std::memcmp(&*a, &*b, sizeof(double)) == 0;  // -0 is not 0
+}
+
+void check(const std::string& token) {
+    CAPTURE(token);
+    CHECK(sameResult(parseNumber(token), reference(token)));
+}
+
+}  // namespace
+
+TEST_CASE("parseNumber: plain decimals, hand-picked, against from_chars") {
+    for (const char* t :
+         {"0", "-0", "0.0", "-0.000000", "+0.5", "1", "-1", "12.345678", "-0.123456", "0.1", "0.3",
+          "0.7", "123456789012345", "12345678901234.5", "1234567890123456", "0.000000000000001",
+          "0.0000000000000001", "999999999999999", "9007199254740993", "4.35", "2.675",
+          "0.1000000000000000055511151231257827", "1.", ".5", "-.5", "-", "+", "", ".", "1e5",
+          "1E-3", "0x10", "1.2.3", "--1", "+-1", "-+1", "1-", "nan", "inf", "-inf", "1e400",
+          "1e-400", " 1", "1 ", "00000000000000012", "0000000.1", "7.000000", "-3.141593"})
+        check(t);
+    // Values with an exact midpoint between two doubles in their decimal:
+    // the division must round to even exactly as from_chars does.
+    check("9007199254740.9921875");  // 20 digits: from_chars' path
+    check("0.500000000000000");
+    CHECK(parseNumber("12.345678").value() == 12.345678);
+    CHECK(std::signbit(parseNumber("-0.000000").value()));
+}
+
+TEST_CASE("parseNumber: two million random tokens give from_chars' doubles") {
+    Pcg32 rng(20261202, 7);
+    const char alphabet[] = "0123456789012345678901234567890123456789.-+e";
+    for (int n = 0; n < 2000000; ++n) {
+        std::string t;
+        switch (rng.next() % 3) {
+            case 0: {  // "%f"-like: sign, up to 9 integer digits, up to 12 decimals
+                if (rng.next() % 2) t += '-';
+                const int a = 1 + int(rng.next() % 9), b = int(rng.next() % 13);
+                for (int k = 0; k < a; ++k) t += char('0' + rng.next() % 10);
+                if (b > 0) {
+                    t += '.';
+                    for (int k = 0; k < b; ++k) t += char('0' + rng.next() % 10);
+                }
+                break;
+            }
+            case 1: {  // long digit strings around the 15-digit limit
+                if (rng.next() % 2) t += '-';
+                const int a = 1 + int(rng.next() % 18);
+                const int dot = int(rng.next() % (a + 1));
+                for (int k = 0; k < a; ++k) {
+                    if (k == dot && k > 0) t += '.';
+                    t += char('0' + rng.next() % 10);
+                }
+                break;
+            }
+            default: {  // anything from the alphabet
+                const int len = int(rng.next() % 8);
+                for (int k = 0; k < len; ++k) t += alphabet[rng.next() % (sizeof alphabet - 1)];
+            }
+        }
+        const std::optional<double> got = parseNumber(t), want = reference(t);
+        if (!sameResult(got, want)) {
+            CAPTURE(t);
+            FAIL_CHECK("parseNumber differs from from_chars");
+        }
+        // The fast path alone: a value only for plain decimals, then from_chars'.
+        const std::optional<double> plain = plainDecimal(t.data(), t.data() + t.size());
+        if (plain && !sameResult(plain, want)) {
+            CAPTURE(t);
+            FAIL_CHECK("plainDecimal differs from from_chars");
+        }
+    }
+}
+
+TEST_CASE("NFF numbers: plain, signed, exponent and long forms read as from_chars reads them") {
+    // A sphere whose centre and radius take every path: the fast one
+    // ("-0.250000", "+1.5"), and from_chars ("1e-1", ".75", 17 digits).
+    const Scene scene = loadNffScene(
+        "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 8 8\n"
+        "f 1 1 1 1 0 1 0 0\ns -0.250000 +1.5 1e-1 .75\n"
+        "s 0.12345678901234567 -7.000001 3 2.5\n",
+        "numbers.nff");
+    REQUIRE(scene.objects.size() == 2);
+    const auto bitsEqual = [](const std::string& token, double value) {
+        CAPTURE(token);
+        const std::optional<double> want = reference(token);
+        REQUIRE(want);
+        CHECK(std::memcmp(&*want, &value, sizeof value) == 0);
+    };
+    const auto* a = dynamic_cast<const Sphere*>(scene.objects[0].shape.get());
+    const auto* b = dynamic_cast<const Sphere*>(scene.objects[1].shape.get());
+    REQUIRE(a);
+    REQUIRE(b);
+    bitsEqual("-0.250000", a->centre().x);
+    bitsEqual("+1.5", a->centre().y);
+    bitsEqual("1e-1", a->centre().z);
+    bitsEqual(".75", a->radius());
+    bitsEqual("0.12345678901234567", b->centre().x);
+    bitsEqual("-7.000001", b->centre().y);
+    bitsEqual("2.5", b->radius());
+}
