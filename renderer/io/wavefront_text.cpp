@@ -33,13 +33,13 @@ std::string_view withoutComment(std::string_view args) {
 }
 
 std::string_view nextToken(std::string_view& rest) {
-    size_t a = 0;
-    while (a < rest.size() && isBlank(rest[a])) ++a;
-    size_t b = a;
-    while (b < rest.size() && !isBlank(rest[b])) ++b;
-    const std::string_view token = rest.substr(a, b - a);
-    rest.remove_prefix(b);
-    return token;
+    const char* p = rest.data();
+    const char* const end = p + rest.size();
+    while (p < end && isBlank(*p)) ++p;
+    const char* q = p;
+    while (q < end && !isBlank(*q)) ++q;
+    rest = std::string_view(q, size_t(end - q));
+    return std::string_view(p, size_t(q - p));
 }
 
 std::string_view trimBlanks(std::string_view s) {

@@ -5,6 +5,7 @@
 // build names the statement the way the file spells it.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,8 +36,13 @@ private:
     int m_line = 0;
 };
 
-/// Whether c separates arguments (blank, tab, CR).
-inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+/// Whether c separates arguments (blank, tab, CR): one bit test for the
+/// characters up to ' ', the hot loop of every statement's tokens.
+inline bool isBlank(char c) {
+    const unsigned u = static_cast<unsigned char>(c);
+    constexpr uint64_t kBlanks = (uint64_t(1) << ' ') | (uint64_t(1) << '\t') | (uint64_t(1) << '\r');
+    return u <= ' ' && ((kBlanks >> u) & 1u) != 0;
+}
 
 /// `args` up to its first '#' (a trailing comment), trailing blanks removed.
 std::string_view withoutComment(std::string_view args);

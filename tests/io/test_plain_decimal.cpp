@@ -144,3 +144,48 @@ TEST_CASE("NFF numbers: plain, signed, exponent and long forms read as from_char
     bitsEqual("-7.000001", b->centre().y);
     bitsEqual("2.5", b->radius());
 }
+
+namespace {
+
+/// nextToken restated one character at a time.
+std::string_view tokenReference(std::string_view& rest) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    size_t a = 0;
+    while (a < rest.size() && blank(rest[a])) ++a;
+    size_t b = a;
+    while (b < rest.size() && !blank(rest[b])) ++b;
+    const std::string_view token = rest.substr(a, b - a);
+    rest.remove_prefix(b);
+    return token;
+}
+
+}  // namespace
+
+TEST_CASE("nextToken: the tokens of the plain three-way blank test") {
+    // isBlank is a bit test now: blanks, control characters inside tokens
+    // ('\v', '\f', '\x01', '\0', '\n', '!' = 0x21), bytes from 0x80 (UTF-8).
+    const char alphabet[] = {' ', '\t', '\r', 'a', '1', '-', '.', '\v', '\f', '\x01', '\0', '\n',
+                             '!', '\x20', '\x21', '\x7f', '\x80', '\xc3', '\xa9', '\xff', '/'};
+    Pcg32 rng(7, 3);
+    for (int n = 0; n < 200000; ++n) {
+        std::string text;
+        const int len = int(rng.next() % 40);
+        for (int k = 0; k < len; ++k) {
+            // Runs of one kind so that long tokens and long blanks both occur.
+            const char c = alphabet[rng.next() % sizeof alphabet];
+            const int run = 1 + int(rng.next() % 9);
+            for (int r = 0; r < run; ++r) text += c;
+        }
+        std::string_view a = text, b = text;
+        for (int t = 0; t < 200; ++t) {
+            const std::string_view got = nextToken(a), want = tokenReference(b);
+            if (got.data() != want.data() || got.size() != want.size() || a.data() != b.data() ||
+                a.size() != b.size()) {
+                CAPTURE(text);
+                FAIL_CHECK("nextToken differs from the reference");
+                break;
+            }
+            if (got.empty()) break;
+        }
+    }
+}
