@@ -98,3 +98,32 @@ TEST_CASE("obj chunks: the first error of the file is reported, wherever the chu
         CHECK(raylab::test::contains(f.message, "'x' is not a finite number"));
     }
 }
+
+TEST_CASE("obj indices: plain digits (the fast path) and every other form read alike") {
+    // Each face names vertices 1, 2, 3 (or 3, 2, 1) in another spelling:
+    // leading zeros, ten digits (past the fast path), relative, '/' forms.
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
+    for (const char* face : {"f 1 2 3", "f 001 02 0003", "f 0000000001 2 0000000003",
+                             "f -3 -2 -1", "f 1/1 2/1 3/1", "f 3 2 1"})
+        text += std::string(face) + "\n";
+    LoadWarnings w("i.obj");
+    const ObjData d = parseObj(text, "i.obj", w);
+    REQUIRE(d.faces.size() == 6);
+    REQUIRE(d.cornerV.size() == 18);
+    for (size_t f = 0; f < 5; ++f)
+        for (size_t k = 0; k < 3; ++k) {
+            CAPTURE(f);
+            CHECK(d.cornerV[3 * f + k] == k);
+        }
+    CHECK(d.cornerV[15] == 2);
+    CHECK(d.cornerV[17] == 0);
+    // Out of range and zero still fail with the general path's message.
+    for (const char* bad : {"f 1 2 4", "f 0 1 2", "f 1 2 999999999"}) {
+        CAPTURE(bad);
+        LoadWarnings wb("b.obj");
+        const auto failure = raylab::test::failureOf(
+            [&] { parseObj(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + bad + "\n", "b.obj", wb); });
+        CHECK(failure.line == 4);
+        CHECK(raylab::test::contains(failure.message, "face refers to vertex"));
+    }
+}
