@@ -11,6 +11,7 @@ required=(
   libembree-dev         # Embree 3: BVH build and traversal, user geometry
   libtbb-dev            # oneTBB: parallel tile loop
   libopenexr-dev        # OpenEXR: HDR output with AOV layers
+  libdeflate-dev        # libdeflate: the deflate of the EXR's ZIP blocks (a third of zlib's instructions)
   libtinyobjloader-dev  # tinyobjloader: MTL libraries; the reference OBJ parser of the differential test
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview
@@ -22,6 +23,7 @@ optional=(
   libopenmpi-dev openmpi-bin # distributed rendering (-DRAYLAB_MPI=ON)
   povray                     # scripts/bench-povray.sh: raylab vs POV-Ray on the SPD scenes
   chromium                   # the headless-browser test of the HTML reports (--html)
+  openimageio-tools openexr  # idiff, exrheader: scripts/picture-regression.sh compares decoded EXRs
   librsvg2-bin imagemagick libmagickcore-6.q16-6-extra fonts-dejavu-core
                              # the tests that rasterise a --plot SVG (rsvg-convert, convert)
 )

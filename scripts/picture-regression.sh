@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Renders every picture the project promises to keep with two raylab binaries
 # and compares them: the RGBA layers with `raylab compare` (exit 0 only when
-# bit-identical) and the whole EXR files byte for byte (AOV layers included).
+# bit-identical) and the whole EXR files byte for byte (AOV layers included);
+# files whose bytes differ are "decoded-same" when every channel and header
+# attribute is (idiff and exrheader, from the optional tools).
 # A developer's check before landing a change that must not change pictures.
 #
 #   scripts/picture-regression.sh OLD_RAYLAB NEW_RAYLAB [WORKDIR]
@@ -52,6 +54,16 @@ if [[ -d "$shared/models" ]]; then
   done
 fi
 
+# Files whose bytes differ may still hold the same image (another deflate
+# stream, e.g. a change of compressor): every channel's values equal (idiff
+# with no tolerance) and the same header attributes (exrheader's listing).
+# Needs openimageio-tools and openexr (scripts/install-deps.sh --optional).
+same_decoded() {
+  command -v idiff >/dev/null && command -v exrheader >/dev/null || return 1
+  idiff -q -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1 || return 1
+  cmp -s <(exrheader "$1" | tail -n +3) <(exrheader "$2" | tail -n +3)
+}
+
 differ=0
 printf '%-28s %-10s %-8s %s\n' case rgba exr-bytes flags
 for c in "${cases[@]}"; do
@@ -68,7 +80,13 @@ for c in "${cases[@]}"; do
   else
     rgba=DIFFERENT; differ=1
   fi
-  if cmp -s "$work/old/$name.exr" "$work/new/$name.exr"; then bytes=same; else bytes=differ; fi
+  if cmp -s "$work/old/$name.exr" "$work/new/$name.exr"; then
+    bytes=same
+  elif same_decoded "$work/old/$name.exr" "$work/new/$name.exr"; then
+    bytes=decoded-same
+  else
+    bytes=differ
+  fi
   printf '%-28s %-10s %-8s %s\n' "$name" "$rgba" "$bytes" "$extra"
 done
 echo "renders and compare output in $work"

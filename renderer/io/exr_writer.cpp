@@ -23,6 +23,7 @@
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_planes.h"
 #include "renderer/io/exr_string_attribute.h"
+#include "renderer/io/exr_zip_file.h"
 
 namespace raylab {
 
@@ -113,8 +114,6 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
                        dataWindow);
     header.compression() = toImf(opts.compression);
-    // Not stored in the file (any zlib reads any level): the speed/size trade.
-    header.zipCompressionLevel() = kExrZipLevel;
     if (!opts.software.empty()) header.insert("software", ExrStringAttribute(opts.software));
     if (opts.camera) {
         header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
@@ -190,8 +189,16 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         }
     }
 
-    // Compression dominates the write; blocks are compressed in parallel
-    // but always written in scan-line order, so the bytes stay deterministic.
+    // ZIP and ZIPS (the default): raylab's own chunk writer, libdeflate on
+    // every core the render had (exr_zip_file.h). Blocks are compressed in
+    // parallel and written in scan-line order, so the bytes stay deterministic.
+    if (opts.compression == ExrCompression::Zip || opts.compression == ExrCompression::Zips) {
+        writeFileAtomically(path, [&](const std::string& tmp) {
+            writeExrZipFile(tmp, header, fb, opts.threads);
+        }, group);
+        return;
+    }
+    // The other compressions go through OpenEXR, on its worker pool.
     const int threads =
         opts.threads > 0 ? opts.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     // OpenEXR runs compression tasks on its global pool (empty by default, i.e.

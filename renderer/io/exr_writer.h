@@ -40,12 +40,6 @@ namespace raylab {
 /// (docs/benchmarks.md measures each: CPU time, bytes).
 enum class ExrCompression { None, Rle, Zips, Zip, Piz };
 
-/// The zlib level of ZIP and ZIPS. OpenEXR's default is 4 (zlib's slow,
-/// lazy-matching deflate); levels 1-3 use zlib's fast deflate: on the SPD
-/// scenes' EXRs level 3 took 29-37% fewer instructions than 4 for files 3-12%
-/// larger (levels 1 and 2: the same time, larger files). docs/benchmarks.md §4.
-constexpr int kExrZipLevel = 3;
-
 /// --compression names, in the enum's order.
 inline constexpr const char* kExrCompressionNames[] = {"none", "rle", "zips", "zip", "piz"};
 

@@ -1,0 +1,243 @@
+#include "renderer/io/exr_zip_file.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <emmintrin.h>
+#include <libdeflate.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfStdIO.h>
+
+namespace raylab {
+
+namespace {
+
+constexpr int32_t kExrMagic = 20000630;
+constexpr int32_t kExrVersion = 2;
+constexpr int32_t kLongNamesFlag = 0x400;  // a name of 32 characters or more
+
+/// OpenEXR's rule for the version field's long-names flag (ImfHeader.cpp).
+bool usesLongNames(const Imf::Header& header) {
+    for (auto it = header.begin(); it != header.end(); ++it)
+        if (std::strlen(it.name()) >= 32 || std::strlen(it.attribute().typeName()) >= 32)
+            return true;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+        if (std::strlen(it.name()) >= 32) return true;
+    return false;
+}
+
+size_t pixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
+
+/// Where one channel's values come from: base + x * xStride + y * yStride
+/// (OpenEXR's slice addressing, in data-window coordinates).
+struct ChannelSource {
+    const char* base = nullptr;  ///< null: zeros
+    size_t size = 0;             ///< bytes per value
+    ptrdiff_t xStride = 0;
+    ptrdiff_t yStride = 0;
+};
+
+struct Deflater {
+    libdeflate_compressor* compressor = nullptr;
+    std::vector<unsigned char> raw, prepassed;
+    Deflater() : compressor(libdeflate_alloc_compressor(kExrDeflateLevel)) {
+        if (!compressor) throw std::bad_alloc();
+    }
+    Deflater(const Deflater&) = delete;
+    Deflater& operator=(const Deflater&) = delete;
+    ~Deflater() { libdeflate_free_compressor(compressor); }
+};
+
+void appendInt32(std::vector<char>& out, int32_t v) {
+    char b[4];
+    std::memcpy(b, &v, 4);  // EXR is little-endian, like every machine raylab builds on
+    out.insert(out.end(), b, b + 4);
+}
+
+}  // namespace
+
+void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out) {
+    if (n == 0) return;
+    // One pass: 32 raw bytes give 16 even and 16 odd bytes (SSE2 packs of the
+    // low and high byte of each 16-bit lane), each run differenced against
+    // its own previous 16 bytes. The even run starts the buffer; the odd run's
+    // first predecessor is the even run's last byte.
+    const size_t evenCount = (n + 1) / 2;
+    unsigned char* even = out;
+    unsigned char* odd = out + evenCount;
+    unsigned char prevEven = 0;  // out[0] is fixed after the loops
+    unsigned char prevOdd = raw[2 * (evenCount - 1)];
+    const __m128i lowBytes = _mm_set1_epi16(0x00ff);
+    const __m128i bias = _mm_set1_epi8(char(-128));
+    __m128i lastEven = _mm_set1_epi8(char(prevEven)), lastOdd = _mm_set1_epi8(char(prevOdd));
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(raw + i));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(raw + i + 16));
+        const __m128i e = _mm_packus_epi16(_mm_and_si128(a, lowBytes), _mm_and_si128(b, lowBytes));
+        const __m128i o = _mm_packus_epi16(_mm_srli_epi16(a, 8), _mm_srli_epi16(b, 8));
+        // Each byte's predecessor: the vector shifted up one byte, with the
+        // previous vector's top byte carried in.
+        const __m128i ePrev = _mm_or_si128(_mm_slli_si128(e, 1), _mm_srli_si128(lastEven, 15));
+        const __m128i oPrev = _mm_or_si128(_mm_slli_si128(o, 1), _mm_srli_si128(lastOdd, 15));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(even),
+                         _mm_add_epi8(_mm_sub_epi8(e, ePrev), bias));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(odd),
+                         _mm_add_epi8(_mm_sub_epi8(o, oPrev), bias));
+        lastEven = e;
+        lastOdd = o;
+        even += 16;
+        odd += 16;
+    }
+    if (i > 0) {
+        prevOdd = (unsigned char)(_mm_extract_epi16(lastOdd, 7) >> 8);
+        prevEven = (unsigned char)(_mm_extract_epi16(lastEven, 7) >> 8);
+    }
+    for (; i < n; i += 2) {
+        *even++ = (unsigned char)(raw[i] - prevEven + 128u);
+        prevEven = raw[i];
+        if (i + 1 < n) {
+            *odd++ = (unsigned char)(raw[i + 1] - prevOdd + 128u);
+            prevOdd = raw[i + 1];
+        }
+    }
+    out[0] = raw[0];  // the first byte has no predecessor
+}
+
+void writeExrZipFile(const std::string& path, const Imf::Header& header,
+                     const Imf::FrameBuffer& frameBuffer, int threads) {
+    const Imf::Compression compression = header.compression();
+    if (compression != Imf::ZIP_COMPRESSION && compression != Imf::ZIPS_COMPRESSION)
+        throw std::logic_error("writeExrZipFile: the header's compression is not ZIP or ZIPS");
+    if (header.hasTileDescription() || header.hasType())
+        throw std::logic_error("writeExrZipFile: only single-part scan-line images");
+    header.sanityCheck();
+
+    const Imath::Box2i& dw = header.dataWindow();
+    const int width = dw.max.x - dw.min.x + 1;
+    const int height = dw.max.y - dw.min.y + 1;
+    const int linesPerBlock = compression == Imf::ZIP_COMPRESSION ? 16 : 1;
+    const int blocks = (height + linesPerBlock - 1) / linesPerBlock;
+
+    // Channels in the file's order (the channel list is sorted by name).
+    std::vector<ChannelSource> sources;
+    size_t bytesPerLine = 0;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+        const Imf::Channel& channel = it.channel();
+        if (channel.xSampling != 1 || channel.ySampling != 1)
+            throw std::logic_error(std::string("writeExrZipFile: channel ") + it.name() +
+                                   " is subsampled");
+        ChannelSource source;
+        source.size = pixelTypeSize(channel.type);
+        if (const Imf::Slice* slice = frameBuffer.findSlice(it.name())) {
+            if (slice->type != channel.type || slice->xSampling != 1 || slice->ySampling != 1)
+                throw std::logic_error(std::string("writeExrZipFile: the slice of channel ") +
+                                       it.name() + " has another type or sampling");
+            source.base = slice->base;
+            source.xStride = ptrdiff_t(slice->xStride);
+            source.yStride = ptrdiff_t(slice->yStride);
+        }
+        sources.push_back(source);
+        bytesPerLine += source.size * size_t(width);
+    }
+
+    // Each block: gathered raw lines -> pre-pass -> zlib stream (or raw when
+    // deflate does not shrink it, which OpenEXR's reader recognises by size).
+    std::vector<std::vector<unsigned char>> packed(static_cast<size_t>(blocks));
+    tbb::enumerable_thread_specific<Deflater> deflaters;
+    auto compressBlocks = [&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, blocks), [&](const tbb::blocked_range<int>& r) {
+            Deflater& d = deflaters.local();
+            for (int b = r.begin(); b != r.end(); ++b) {
+                const int y0 = dw.min.y + b * linesPerBlock;
+                const int y1 = std::min(y0 + linesPerBlock, dw.max.y + 1);
+                const size_t n = bytesPerLine * size_t(y1 - y0);
+                d.raw.resize(n);
+                unsigned char* out = d.raw.data();
+                for (int y = y0; y < y1; ++y)
+                    for (const ChannelSource& s : sources) {
+                        const size_t lineBytes = s.size * size_t(width);
+                        if (!s.base) {
+                            std::memset(out, 0, lineBytes);
+                        } else {
+                            const char* p = s.base + ptrdiff_t(y) * s.yStride +
+                                            ptrdiff_t(dw.min.x) * s.xStride;
+                            if (s.xStride == ptrdiff_t(s.size)) {
+                                std::memcpy(out, p, lineBytes);
+                            } else if (s.size == 4) {
+                                for (int x = 0; x < width; ++x, p += s.xStride)
+                                    std::memcpy(out + 4 * size_t(x), p, 4);
+                            } else {
+                                for (int x = 0; x < width; ++x, p += s.xStride)
+                                    std::memcpy(out + 2 * size_t(x), p, 2);
+                            }
+                        }
+                        out += lineBytes;
+                    }
+                d.prepassed.resize(n);
+                exrZipPrepass(d.raw.data(), n, d.prepassed.data());
+                std::vector<unsigned char>& dst = packed[size_t(b)];
+                dst.resize(libdeflate_zlib_compress_bound(d.compressor, n));
+                const size_t size =
+                    libdeflate_zlib_compress(d.compressor, d.prepassed.data(), n, dst.data(), dst.size());
+                if (size == 0 || size >= n)
+                    dst.assign(d.raw.begin(), d.raw.end());
+                else
+                    dst.resize(size);
+            }
+        });
+    };
+    if (threads <= 0 || threads >= tbb::info::default_concurrency()) {
+        compressBlocks();
+    } else {
+        tbb::task_arena arena(threads);
+        arena.execute(compressBlocks);
+    }
+
+    // Magic, version, header, then the offset table and the chunks in order.
+    std::vector<char> head;
+    appendInt32(head, kExrMagic);
+    appendInt32(head, kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0));
+    {
+        Imf::StdOSStream os;
+        header.writeTo(os);
+        const std::string attributes = os.str();
+        head.insert(head.end(), attributes.begin(), attributes.end());
+    }
+    uint64_t offset = uint64_t(head.size()) + 8 * uint64_t(blocks);
+    for (int b = 0; b < blocks; ++b) {
+        char bytes[8];
+        std::memcpy(bytes, &offset, 8);
+        head.insert(head.end(), bytes, bytes + 8);
+        offset += 8 + packed[size_t(b)].size();
+    }
+
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error(std::strerror(errno));
+    errno = 0;
+    bool ok = std::fwrite(head.data(), 1, head.size(), file) == head.size();
+    for (int b = 0; ok && b < blocks; ++b) {
+        const std::vector<unsigned char>& chunk = packed[size_t(b)];
+        const int32_t prefix[2] = {dw.min.y + b * linesPerBlock, int32_t(chunk.size())};
+        ok = std::fwrite(prefix, 1, 8, file) == 8 &&
+             std::fwrite(chunk.data(), 1, chunk.size(), file) == chunk.size();
+    }
+    const int writeErrno = errno;
+    if (std::fclose(file) != 0 && ok) throw std::runtime_error(std::strerror(errno));
+    if (!ok) throw std::runtime_error(std::strerror(writeErrno ? writeErrno : EIO));
+}
+
+}  // namespace raylab
