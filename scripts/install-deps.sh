@@ -11,7 +11,7 @@ required=(
   libembree-dev         # Embree 3: BVH build and traversal, user geometry
   libtbb-dev            # oneTBB: parallel tile loop
   libopenexr-dev        # OpenEXR: HDR output with AOV layers
-  libdeflate-dev        # libdeflate: the deflate of the EXR's ZIP blocks (a third of zlib's instructions)
+  libisal-dev           # ISA-L's igzip: the deflate of the EXR's ZIP blocks (7x zlib's speed, same sizes)
   libtinyobjloader-dev  # tinyobjloader: MTL libraries; the reference OBJ parser of the differential test
   doctest-dev           # doctest: unit and render tests
   libpng-dev            # libpng: the tone-mapped PNG preview

@@ -189,7 +189,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         }
     }
 
-    // ZIP and ZIPS (the default): raylab's own chunk writer, libdeflate on
+    // ZIP and ZIPS (the default): raylab's own chunk writer, igzip on
     // every core the render had (exr_zip_file.h). Blocks are compressed in
     // parallel and written in scan-line order, so the bytes stay deterministic.
     if (opts.compression == ExrCompression::Zip || opts.compression == ExrCompression::Zips) {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include <emmintrin.h>
-#include <libdeflate.h>
+#include <isa-l/igzip_lib.h>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
@@ -50,15 +50,37 @@ struct ChannelSource {
     ptrdiff_t yStride = 0;
 };
 
+/// One thread's buffers: the raw block, its pre-pass, and igzip's hash tables.
 struct Deflater {
-    libdeflate_compressor* compressor = nullptr;
     std::vector<unsigned char> raw, prepassed;
-    Deflater() : compressor(libdeflate_alloc_compressor(kExrDeflateLevel)) {
-        if (!compressor) throw std::bad_alloc();
+    std::vector<uint8_t> levelBuffer = std::vector<uint8_t>(ISAL_DEF_LVL2_DEFAULT);
+
+    /// The zlib stream of in[0, n) in `out` (capacity n - 1), or 0 when it
+    /// would not be smaller than n bytes.
+    size_t deflate(const unsigned char* in, size_t n, unsigned char* out) {
+        static_assert(kExrDeflateLevel == 2, "levelBuffer's size is igzip level 2's");
+        if (n < 2) return 0;
+        // Zeroed first: isal_deflate_stateless_init leaves fields that the
+        // deflate reads (memcheck showed it), and the bytes must not depend on
+        // whatever the stack held.
+        isal_zstream stream{};
+        isal_deflate_stateless_init(&stream);
+        stream.level = kExrDeflateLevel;
+        stream.level_buf = levelBuffer.data();
+        stream.level_buf_size = uint32_t(levelBuffer.size());
+        stream.gzip_flag = IGZIP_ZLIB;  // zlib header and Adler-32, as OpenEXR writes
+        stream.end_of_stream = 1;
+        stream.flush = NO_FLUSH;
+        stream.next_in = const_cast<uint8_t*>(in);
+        stream.avail_in = uint32_t(n);
+        stream.next_out = out;
+        stream.avail_out = uint32_t(n - 1);
+        const int result = isal_deflate_stateless(&stream);
+        if (result == STATELESS_OVERFLOW) return 0;
+        if (result != COMP_OK)
+            throw std::runtime_error("igzip deflate failed (" + std::to_string(result) + ")");
+        return stream.total_out;
     }
-    Deflater(const Deflater&) = delete;
-    Deflater& operator=(const Deflater&) = delete;
-    ~Deflater() { libdeflate_free_compressor(compressor); }
 };
 
 void appendInt32(std::vector<char>& out, int32_t v) {
@@ -190,10 +212,9 @@ void writeExrZipFile(const std::string& path, const Imf::Header& header,
                 d.prepassed.resize(n);
                 exrZipPrepass(d.raw.data(), n, d.prepassed.data());
                 std::vector<unsigned char>& dst = packed[size_t(b)];
-                dst.resize(libdeflate_zlib_compress_bound(d.compressor, n));
-                const size_t size =
-                    libdeflate_zlib_compress(d.compressor, d.prepassed.data(), n, dst.data(), dst.size());
-                if (size == 0 || size >= n)
+                dst.resize(n);
+                const size_t size = d.deflate(d.prepassed.data(), n, dst.data());
+                if (size == 0)
                     dst.assign(d.raw.begin(), d.raw.end());
                 else
                     dst.resize(size);

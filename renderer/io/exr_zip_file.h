@@ -1,18 +1,20 @@
 #pragma once
-// OpenEXR files with ZIP or ZIPS compression, written by raylab with
-// libdeflate instead of through Imf::OutputFile and zlib.
+// OpenEXR files with ZIP or ZIPS compression, written by raylab with igzip
+// (Intel's ISA-L) instead of through Imf::OutputFile and zlib.
 //
 // Why: on the SPD scenes, zlib's deflate and OpenEXR's line-buffer copies were
 // a third of balls' instructions and three fifths of tetra's (docs/
 // benchmarks.md, "The EXR's deflate"). The file is the one OpenEXR writes
-// (OpenEXR 3.2 made the same move for its own ZIP codec): the same magic,
+// (OpenEXR 3.2 too left zlib, for libdeflate): the same magic,
 // version and header bytes (Imf::Header::writeTo), the same scan-line chunks
 // of 16 (ZIP) or 1 (ZIPS) lines with OpenEXR's byte reordering and predictor,
 // a block stored raw when deflate does not make it smaller. Only the deflate
 // stream differs, so any zlib reads it and every decoded value is the same.
 //
 // Blocks are compressed in parallel and written in scan-line order: the bytes
-// do not depend on the thread count.
+// do not depend on the thread count. igzip picks its code for the CPU it runs
+// on (SSE, AVX2, AVX-512), so two kinds of CPU may write different deflate
+// streams of the same pixels; one machine always writes the same bytes.
 
 #include <cstddef>
 #include <string>
@@ -22,11 +24,12 @@
 
 namespace raylab {
 
-/// libdeflate's level for EXR ZIP blocks. Level 1 took half the instructions
-/// of the zlib level 3 it replaces (balls --spd: 388 M against 818 M; levels
-/// 2-6 cost 734-860 M) and still gave smaller files (3.91 MB against 3.97).
+/// igzip's level for EXR ZIP blocks. On balls --spd's 18.4 MB of blocks (one
+/// thread): level 2 deflated them in 33 ms, against 113 for libdeflate's
+/// fastest level and 232 for the zlib level 3 it replaces, into 3.82 MB
+/// (zlib 3: 3.79 MB; igzip's level 0 is no faster and 4.46 MB).
 /// docs/benchmarks.md, "The EXR's deflate".
-constexpr int kExrDeflateLevel = 1;
+constexpr int kExrDeflateLevel = 2;
 
 /// OpenEXR's ZIP pre-pass over one block of `n` raw bytes: the even-indexed
 /// bytes, then the odd-indexed ones (the two bytes of a HALF, the high and low

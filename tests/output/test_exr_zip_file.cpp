@@ -1,4 +1,4 @@
-// raylab's ZIP/ZIPS writer (libdeflate) against OpenEXR's own Imf::OutputFile:
+// raylab's ZIP/ZIPS writer (igzip) against OpenEXR's own Imf::OutputFile:
 // the same header bytes, the same decoded values in every channel, blocks
 // that do not shrink stored raw, bytes independent of the thread count.
 #include <doctest/doctest.h>
