@@ -63,9 +63,10 @@ struct ExrOptions {
     /// (matteRanksOfSampling). Unused ranks would be zeros that cost as much
     /// to compress as data. More are written if a pixel of the film needs them.
     int matteRanks = kMatteRanks;
-    /// Threads compressing scan-line blocks (0: one per hardware thread). OpenEXR's
-    /// process-wide worker pool is grown to this size if it is smaller. The file's
-    /// bytes do not depend on it.
+    /// Threads compressing scan-line blocks (0: one per hardware thread): TBB
+    /// tasks for ZIP and ZIPS (exr_zip_file.h); for the other compressions
+    /// OpenEXR's process-wide worker pool, grown to this size if it is smaller.
+    /// The file's bytes do not depend on it.
     int threads = 0;
 };
 
