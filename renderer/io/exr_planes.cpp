@@ -1,11 +1,9 @@
 #include "renderer/io/exr_planes.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +15,7 @@
 #include "renderer/io/exr_writer.h"
 #include "renderer/io/finite_clamp.h"
 #include "renderer/io/half_convert.h"
+#include "renderer/thread_arena.h"
 
 namespace raylab {
 
@@ -192,12 +191,8 @@ ExrPlanes prepare(const Film& film, bool floatPixels, const std::vector<std::str
 ExrPlanes prepareExrPlanes(const Film& film, bool floatPixels,
                            const std::vector<std::string>& objectNames, int wantedRanks,
                            int threads) {
-    // More threads than TBB runs by default is the default (a larger arena
-    // only makes TBB warn on stderr that it cannot have the workers).
-    if (threads <= 0 || threads >= tbb::info::default_concurrency())
-        return prepare(film, floatPixels, objectNames, wantedRanks);
-    tbb::task_arena arena(threads);
-    return arena.execute([&] { return prepare(film, floatPixels, objectNames, wantedRanks); });
+    return runWithThreads(threads,
+                          [&] { return prepare(film, floatPixels, objectNames, wantedRanks); });
 }
 
 }  // namespace raylab

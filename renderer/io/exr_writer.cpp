@@ -193,9 +193,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     // every core the render had (exr_zip_file.h). Blocks are compressed in
     // parallel and written in scan-line order, so the bytes stay deterministic.
     if (opts.compression == ExrCompression::Zip || opts.compression == ExrCompression::Zips) {
-        writeFileAtomically(path, [&](const std::string& tmp) {
-            writeExrZipFile(tmp, header, fb, opts.threads);
-        }, group);
+        writeFileAtomically(path, encodeExrZipFile(header, fb, opts.threads), group);
         return;
     }
     // The other compressions go through OpenEXR, on its worker pool.

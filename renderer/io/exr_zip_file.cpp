@@ -1,12 +1,9 @@
 #include "renderer/io/exr_zip_file.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,12 +12,12 @@
 #include <isa-l/igzip_lib.h>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfStdIO.h>
+
+#include "renderer/thread_arena.h"
 
 namespace raylab {
 
@@ -86,10 +83,13 @@ struct Deflater {
     }
 };
 
-void appendInt32(std::vector<char>& out, int32_t v) {
-    char b[4];
-    std::memcpy(b, &v, 4);  // EXR is little-endian, like every machine raylab builds on
-    out.insert(out.end(), b, b + 4);
+/// The bytes of an int32 or uint64 field (EXR is little-endian, like every
+/// machine raylab builds on).
+template <class T>
+void appendBytes(std::string& out, T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    out.append(b, sizeof(T));
 }
 
 }  // namespace
@@ -142,13 +142,13 @@ void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out) {
     out[0] = raw[0];  // the first byte has no predecessor
 }
 
-void writeExrZipFile(const std::string& path, const Imf::Header& header,
-                     const Imf::FrameBuffer& frameBuffer, int threads) {
+std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
+                             int threads) {
     const Imf::Compression compression = header.compression();
     if (compression != Imf::ZIP_COMPRESSION && compression != Imf::ZIPS_COMPRESSION)
-        throw std::logic_error("writeExrZipFile: the header's compression is not ZIP or ZIPS");
+        throw std::logic_error("encodeExrZipFile: the header's compression is not ZIP or ZIPS");
     if (header.hasTileDescription() || header.hasType())
-        throw std::logic_error("writeExrZipFile: only single-part scan-line images");
+        throw std::logic_error("encodeExrZipFile: only single-part scan-line images");
     header.sanityCheck();
 
     const Imath::Box2i& dw = header.dataWindow();
@@ -163,13 +163,13 @@ void writeExrZipFile(const std::string& path, const Imf::Header& header,
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
         const Imf::Channel& channel = it.channel();
         if (channel.xSampling != 1 || channel.ySampling != 1)
-            throw std::logic_error(std::string("writeExrZipFile: channel ") + it.name() +
+            throw std::logic_error(std::string("encodeExrZipFile: channel ") + it.name() +
                                    " is subsampled");
         ChannelSource source;
         source.size = pixelTypeSize(channel.type);
         if (const Imf::Slice* slice = frameBuffer.findSlice(it.name())) {
             if (slice->type != channel.type || slice->xSampling != 1 || slice->ySampling != 1)
-                throw std::logic_error(std::string("writeExrZipFile: the slice of channel ") +
+                throw std::logic_error(std::string("encodeExrZipFile: the slice of channel ") +
                                        it.name() + " has another type or sampling");
             source.base = slice->base;
             source.xStride = ptrdiff_t(slice->xStride);
@@ -221,44 +221,30 @@ void writeExrZipFile(const std::string& path, const Imf::Header& header,
             }
         });
     };
-    if (threads <= 0 || threads >= tbb::info::default_concurrency()) {
-        compressBlocks();
-    } else {
-        tbb::task_arena arena(threads);
-        arena.execute(compressBlocks);
-    }
+    runWithThreads(threads, compressBlocks);
 
     // Magic, version, header, then the offset table and the chunks in order.
-    std::vector<char> head;
-    appendInt32(head, kExrMagic);
-    appendInt32(head, kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0));
+    std::string file;
+    appendBytes(file, kExrMagic);
+    appendBytes(file, int32_t(kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0)));
     {
         Imf::StdOSStream os;
         header.writeTo(os);
-        const std::string attributes = os.str();
-        head.insert(head.end(), attributes.begin(), attributes.end());
+        file += os.str();
     }
-    uint64_t offset = uint64_t(head.size()) + 8 * uint64_t(blocks);
+    uint64_t offset = uint64_t(file.size()) + 8 * uint64_t(blocks);
     for (int b = 0; b < blocks; ++b) {
-        char bytes[8];
-        std::memcpy(bytes, &offset, 8);
-        head.insert(head.end(), bytes, bytes + 8);
+        appendBytes(file, offset);
         offset += 8 + packed[size_t(b)].size();
     }
-
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) throw std::runtime_error(std::strerror(errno));
-    errno = 0;
-    bool ok = std::fwrite(head.data(), 1, head.size(), file) == head.size();
-    for (int b = 0; ok && b < blocks; ++b) {
+    file.reserve(offset);
+    for (int b = 0; b < blocks; ++b) {
         const std::vector<unsigned char>& chunk = packed[size_t(b)];
-        const int32_t prefix[2] = {dw.min.y + b * linesPerBlock, int32_t(chunk.size())};
-        ok = std::fwrite(prefix, 1, 8, file) == 8 &&
-             std::fwrite(chunk.data(), 1, chunk.size(), file) == chunk.size();
+        appendBytes(file, int32_t(dw.min.y + b * linesPerBlock));
+        appendBytes(file, int32_t(chunk.size()));
+        file.append(reinterpret_cast<const char*>(chunk.data()), chunk.size());
     }
-    const int writeErrno = errno;
-    if (std::fclose(file) != 0 && ok) throw std::runtime_error(std::strerror(errno));
-    if (!ok) throw std::runtime_error(std::strerror(writeErrno ? writeErrno : EIO));
+    return file;
 }
 
 }  // namespace raylab

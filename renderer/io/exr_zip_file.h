@@ -38,16 +38,17 @@ constexpr int kExrDeflateLevel = 2;
 /// `out` holds n bytes and does not overlap `raw`.
 void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out);
 
-/// \brief Writes `header` (ZIP_COMPRESSION or ZIPS_COMPRESSION, scan lines,
-/// one part) with the pixels of `frameBuffer` to the file `path`, compressing
-/// blocks on up to `threads` threads (0: all TBB may use).
+/// \brief The bytes of an OpenEXR file of `header` (ZIP_COMPRESSION or
+/// ZIPS_COMPRESSION, scan lines, one part) with the pixels of `frameBuffer`,
+/// compressing blocks on up to `threads` threads (0: all TBB may use). The
+/// caller writes them (writeFileAtomically).
 ///
 /// Every channel of the header needs a slice of its own pixel type in the
 /// frame buffer (a channel without one is written as zeros, like
 /// Imf::OutputFile does), and sampling 1x1.
-/// \throws std::runtime_error (Iex or std) when the header is invalid, a slice
-///         does not fit, or the file cannot be written.
-void writeExrZipFile(const std::string& path, const Imf::Header& header,
-                     const Imf::FrameBuffer& frameBuffer, int threads);
+/// \throws std::logic_error / Iex errors when the header or a slice is not
+///         one this writer handles, std::runtime_error when igzip fails.
+std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
+                             int threads);
 
 }  // namespace raylab
