@@ -45,7 +45,9 @@ public:
     Color transmission(const Ray& ray, const Hit& candidate) const;
 
     /// A shadow feeler reached its light through `crossings` transmitters.
-    void countCrossings(uint64_t crossings) const { m_counts.local().attenuated += crossings; }
+    void countCrossings(uint64_t crossings) const {
+        if (crossings) m_counts.local().attenuated += crossings;
+    }
     /// Counts since construction, summed over threads.
     FilterCounts counts() const;
 
@@ -55,7 +57,12 @@ private:
     std::optional<double> m_cutoff;  ///< --alpha-cutoff, else each material's
     std::vector<uint8_t> m_filtered;  ///< per object
     bool m_transmits = false, m_cutsOut = false;
-    mutable tbb::enumerable_thread_specific<FilterCounts> m_counts;
+    // Per-instance native thread-local keys: local() is asked once per
+    // filtered shadow feeler, and the default key (a hash of the thread id
+    // in a table) cost more than the feeler's own bookkeeping.
+    mutable tbb::enumerable_thread_specific<FilterCounts, tbb::cache_aligned_allocator<FilterCounts>,
+                                            tbb::ets_key_per_instance>
+        m_counts;
 };
 
 }  // namespace raylab
