@@ -152,10 +152,11 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     // Textured scenes need the surface derivatives at every hit (footprints),
     // uv only where the material has maps.
     SurfaceDetail detail = SurfaceDetail::Normals;
-    if constexpr (textured(E))
-        detail = m_scene.materials[m_scene.objects[hit->object].materialOf(hit->prim)].maps.any()
-                     ? SurfaceDetail::Complete
-                     : SurfaceDetail::Derivatives;
+    [[maybe_unused]] bool hasMaps = false;  // the hit's material has texture maps
+    if constexpr (textured(E)) {
+        hasMaps = m_scene.materials[m_scene.objects[hit->object].materialOf(hit->prim)].maps.any();
+        detail = hasMaps ? SurfaceDetail::Complete : SurfaceDetail::Derivatives;
+    }
     SurfaceInteraction si =
         m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
     // `entering` is false when the ray is inside the object (it hit the back
@@ -181,8 +182,7 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
     }();
     [[maybe_unused]] LateValue<SurfaceOptics> texturedOptics;
     if constexpr (textured(E)) {
-        const Material& material = m_scene.materials[si.material];
-        if (material.maps.any())
+        if (hasMaps)
             optics = &texturedOptics.emplaceFrom(
                 [&] { return m_textures->shade(si.material, si, hitFootprint); });
     }
