@@ -319,11 +319,13 @@ private:
         const char* last = t.data() + t.size();
         if (*first == '+' && t.size() > 1 && first[1] != '-') ++first;  // from_chars rejects '+'
         const int line = m_tok.tokenLine();
-        if (const std::optional<double> plain = plainDecimal(first, last)) {
+        // Every number read is counted, with its line, for a later count error.
+        const auto accepted = [&](double v) {
             ++m_numbersRead;
             m_lastNumberLine = line;
-            return *plain;
-        }
+            return v;
+        };
+        if (const std::optional<double> plain = plainDecimal(first, last)) return accepted(*plain);
         double v = 0;
         const auto [ptr, ec] = std::from_chars(first, last, v);
         if (ptr != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
@@ -338,9 +340,7 @@ private:
         }
         if (!std::isfinite(v))
             failAt(line, entityName() + ": " + what + " must be a finite number, got " + quoted(t));
-        ++m_numbersRead;
-        m_lastNumberLine = line;
-        return v;
+        return accepted(v);
     }
 
     Vec3 vec3(const char* x, const char* y, const char* z) {
