@@ -1,12 +1,13 @@
 // cornerAngles: the interior angles of a triangle, each edge normalised once.
 // Checked against hand-computed angles and, bit for bit, against the
 // textbook per-corner formula (which the OBJ loader's smoothing normals used
-// before) on random, skinny, collinear and extreme-scale triangles.
+// before) on random, skinny, collinear, grid and extreme-scale triangles.
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "geometry/corner_angles.h"
 #include "geometry/random.h"
@@ -49,9 +50,10 @@ TEST_CASE("cornerAngles: hand-computed triangles") {
     // Equilateral, tilted out of every axis plane: 60 degrees each.
     const Vec3 p0{1, 0, 0}, p1{0, 1, 0}, p2{0, 0, 1};
     for (double x : cornerAngles(p0, p1, p2)) CHECK(x == doctest::Approx(kPi / 3).epsilon(1e-15));
-    // An obtuse corner: 120 degrees at the apex of an isosceles triangle.
+    // 60 degrees at the apex of an equilateral triangle in the xy plane.
     a = cornerAngles({0, 0, 0}, {std::sqrt(3.0), -1, 0}, {std::sqrt(3.0), 1, 0});
     CHECK(a[0] == doctest::Approx(kPi / 3).epsilon(1e-15));
+    // An obtuse corner: 120 degrees at the apex of an isosceles triangle.
     a = cornerAngles({0, 1, 0}, {-std::sqrt(3.0), 0, 0}, {std::sqrt(3.0), 0, 0});
     CHECK(a[0] == doctest::Approx(2 * kPi / 3).epsilon(1e-15));
     CHECK(a[1] == doctest::Approx(kPi / 6).epsilon(1e-15));
@@ -80,6 +82,26 @@ TEST_CASE("cornerAngles: the textbook formula's bits on random triangles") {
         ++tested;
     }
     CHECK(tested == 180000);
+    CHECK(differ == 0);
+}
+
+TEST_CASE("cornerAngles: the textbook formula's bits on a grid (shared coordinates, signed zeros)") {
+    // Terrains and axis-aligned meshes share coordinates between corners:
+    // edges with zero components, where -(p - q) and q - p differ in the sign
+    // of a zero. Every triangle with area on the {-1, 0, 1}^3 grid.
+    std::vector<Vec3> grid;
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z) grid.push_back(Vec3(x, y, z));
+    int tested = 0, differ = 0;
+    for (const Vec3& p0 : grid)
+        for (const Vec3& p1 : grid)
+            for (const Vec3& p2 : grid) {
+                if (lengthSquared(cross(p1 - p0, p2 - p0)) == 0) continue;
+                differ += differingCorners(p0, p1, p2);
+                ++tested;
+            }
+    CHECK(tested > 15000);
     CHECK(differ == 0);
 }
 
