@@ -62,8 +62,6 @@ private:
 
     Crossing* begin() { return m_size > kInline ? m_spilled.data() : m_inline.data(); }
     Crossing* end() { return begin() + m_size; }
-    const Crossing* begin() const { return m_size > kInline ? m_spilled.data() : m_inline.data(); }
-    const Crossing* end() const { return begin() + m_size; }
 
     size_t m_size = 0;
     std::array<Crossing, kInline> m_inline;  ///< the first kInline crossings (unset beyond m_size)

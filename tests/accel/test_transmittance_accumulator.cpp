@@ -89,38 +89,31 @@ TEST_CASE("transmittance: the same bits for every arrival order") {
     const double factors[] = {0.1, 0.7, 0.3, 0.9, 0.11, 0.13, 0.17};
     for (uint32_t i = 0; i < 7; ++i)
         crossings.push_back({i % 2, i, 0.25 * i, Color(factors[i], factors[6 - i], 0.3)});
-    // The canonical order: (object, prim, t).
-    std::vector<Crossing> sorted = crossings;
-    std::sort(sorted.begin(), sorted.end(), [](const Crossing& a, const Crossing& b) {
-        if (a.object != b.object) return a.object < b.object;
-        if (a.prim != b.prim) return a.prim < b.prim;
-        return a.t < b.t;
-    });
-    Color want(1.0);
-    for (const Crossing& c : sorted) want = want * c.kt;
-    for (size_t count : {3u, 4u, 5u, 7u}) {
-        std::vector<Crossing> some(crossings.begin(), crossings.begin() + long(count));
-        std::vector<Crossing> someSorted = some;
-        std::sort(someSorted.begin(), someSorted.end(), [](const Crossing& a, const Crossing& b) {
+    // The product in the canonical order, (object, prim, t), computed here.
+    const auto canonicalProduct = [](std::vector<Crossing> sorted) {
+        std::sort(sorted.begin(), sorted.end(), [](const Crossing& a, const Crossing& b) {
             if (a.object != b.object) return a.object < b.object;
             if (a.prim != b.prim) return a.prim < b.prim;
             return a.t < b.t;
         });
-        Color expected(1.0);
-        for (const Crossing& c : someSorted) expected = expected * c.kt;
-        std::sort(some.begin(), some.end(),
-                  [](const Crossing& a, const Crossing& b) { return a.prim < b.prim; });
+        Color c(1.0);
+        for (const Crossing& x : sorted) c = c * x.kt;
+        return c;
+    };
+    const auto byPrim = [](const Crossing& a, const Crossing& b) { return a.prim < b.prim; };
+    for (size_t count : {3u, 4u, 5u, 7u}) {
+        std::vector<Crossing> some(crossings.begin(), crossings.begin() + long(count));
+        const Color expected = canonicalProduct(some);
+        std::sort(some.begin(), some.end(), byPrim);
         int orders = 0, differ = 0;
         do {
             differ += !sameBits(productOf(some), expected);
             ++orders;
-        } while (std::next_permutation(some.begin(), some.end(), [](const Crossing& a, const Crossing& b) {
-            return a.prim < b.prim;
-        }));
+        } while (std::next_permutation(some.begin(), some.end(), byPrim));
         CHECK(differ == 0);
         CHECK(orders > 1);
     }
-    CHECK(sameBits(productOf(crossings), want));
+    CHECK(sameBits(productOf(crossings), canonicalProduct(crossings)));
 }
 
 TEST_CASE("transmittance: an opaque crossing blocks all light") {

@@ -18,6 +18,7 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/render_setup.h"
 #include "renderer/whitted_integrator.h"
+#include "renderer/shadow_cache_pixels.h"
 
 using namespace raylab;
 using raylab::test::TempDir;
@@ -186,31 +187,19 @@ TEST_CASE("cut-outs: the shadow cache changes no pixel, holes in shadows next to
     for (const Accelerator* accel : {static_cast<const Accelerator*>(&naive),
                                      static_cast<const Accelerator*>(&embree)}) {
         const WhittedIntegrator integrator(scene, *accel, options, effects);
-        // Row by row, one cache carried across pixels as a render's worker
-        // carries it: a solid sphere's hint reaches pixels in a hole's shadow.
-        ShadowCache cache;
+        // The cache carried across pixels: a solid sphere's hint reaches
+        // pixels in a hole's shadow.
+        const std::vector<Color> pixels =
+            pixelsWithAndWithoutCache(scene, integrator, *o.width, *o.height);
+        if (reference.empty()) reference = pixels;
+        REQUIRE(pixels.size() == reference.size());
         int lit = 0, dark = 0;
-        size_t i = 0;
-        for (int y = 0; y < o.height.value(); ++y) {
-            for (int x = 0; x < o.width.value(); ++x, ++i) {
-                const Ray ray = scene.camera.generateRay(x + 0.5, y + 0.5, *o.width, *o.height);
-                RayCounters counters;
-                SampleRays spent;
-                const Color cached = integrator.Li(ray, counters, nullptr, spent, &cache);
-                const Color uncached = integrator.Li(ray, counters, nullptr, spent, nullptr);
-                CAPTURE(x);
-                CAPTURE(y);
-                CHECK(cached.r == uncached.r);
-                CHECK(cached.g == uncached.g);
-                CHECK(cached.b == uncached.b);
-                if (reference.size() < size_t(*o.width) * size_t(*o.height))
-                    reference.push_back(uncached);
-                else
-                    CHECK((reference[i].r == cached.r && reference[i].g == cached.g &&
-                           reference[i].b == cached.b));
-                // The floor (grey): in shadow it keeps the ambient only.
-                if (cached.r == cached.g && cached.g == cached.b) (cached.r > 0.06 ? lit : dark)++;
-            }
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            const Color& c = pixels[i];
+            CAPTURE(i);
+            CHECK((reference[i].r == c.r && reference[i].g == c.g && reference[i].b == c.b));
+            // The floor (grey): in shadow it keeps the ambient only.
+            if (c.r == c.g && c.g == c.b) (c.r > 0.06 ? lit : dark)++;
         }
         // Floor both lit and shadowed, so the cache had occluders to name.
         CHECK(lit > 500);

@@ -15,7 +15,7 @@
 #include "renderer/effects.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
-#include "renderer/shadow_cache.h"
+#include "renderer/shadow_cache_pixels.h"
 #include "renderer/whitted_integrator.h"
 
 using namespace raylab;
@@ -230,29 +230,19 @@ TEST_CASE("filtered shadows: the shadow cache changes no feeler's answer") {
     for (const Accelerator* accel : {static_cast<const Accelerator*>(&naive),
                                      static_cast<const Accelerator*>(&embree)}) {
         const WhittedIntegrator integrator(s, *accel, options, effects);
-        ShadowCache cache;
-        size_t i = 0;
+        const std::vector<Color> pixels =
+            pixelsWithAndWithoutCache(s, integrator, s.image.width, s.image.height);
+        if (reference.empty()) reference = pixels;
+        REQUIRE(pixels.size() == reference.size());
         int dimmed = 0, black = 0;
-        for (int y = 0; y < s.image.height; ++y) {
-            for (int x = 0; x < s.image.width; ++x, ++i) {
-                const Ray ray =
-                    s.camera.generateRay(x + 0.5, y + 0.5, s.image.width, s.image.height);
-                RayCounters counters;
-                SampleRays spent;
-                const Color cached = integrator.Li(ray, counters, nullptr, spent, &cache);
-                const Color uncached = integrator.Li(ray, counters, nullptr, spent, nullptr);
-                CAPTURE(x);
-                CAPTURE(y);
-                CHECK(cached == uncached);
-                if (reference.size() <= i)
-                    reference.push_back(uncached);
-                else
-                    CHECK(reference[i] == cached);
-                // The floor's grey: 0.02 in an opaque shadow, 0.52 lit, between them dimmed.
-                if (cached.r == cached.g && cached.g == cached.b) {
-                    if (cached.r < 0.03) ++black;
-                    else if (cached.r < 0.5) ++dimmed;
-                }
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            const Color& c = pixels[i];
+            CAPTURE(i);
+            CHECK(reference[i] == c);
+            // The floor's grey: 0.02 in an opaque shadow, 0.52 lit, between them dimmed.
+            if (c.r == c.g && c.g == c.b) {
+                if (c.r < 0.03) ++black;
+                else if (c.r < 0.5) ++dimmed;
             }
         }
         CHECK(black > 20);
