@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "geometry/plane_hit.h"
 #include "geometry/quadratic.h"
@@ -263,6 +268,44 @@ bool Polygon::insideProjected(const Vec3T<T>& p) const {
     return accepts(winding, crossings);
 }
 
+namespace {
+
+/// From this many vertices on, the watertight test finds the crossing edges
+/// from bit masks; below it the plain loop is cheaper (measured on SPD balls'
+/// floor quad: 110 instructions per test, 150 through masks).
+constexpr size_t kMaskMinVertices = 16;
+
+/// Bit i: whether vertex i's sheared y, (Y[i] - oy) - sy·(Z[i] - oz), is
+/// > 0, for i < n <= 64 (insideWatertight's y; NaN is not > 0). Several
+/// vertices per instruction where SSE2 is there: SIMD lanes round each
+/// operation exactly as scalar code does (no FMA), so the bits are the same.
+template <class T>
+uint64_t aboveMask(const T* Y, const T* Z, size_t n, T oy, T oz, T sy) {
+    uint64_t mask = 0;
+    size_t i = 0;
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<T, double>) {
+        const __m128d vy = _mm_set1_pd(oy), vz = _mm_set1_pd(oz), vs = _mm_set1_pd(sy);
+        for (; i + 2 <= n; i += 2) {
+            const __m128d y = _mm_sub_pd(_mm_sub_pd(_mm_loadu_pd(Y + i), vy),
+                                         _mm_mul_pd(vs, _mm_sub_pd(_mm_loadu_pd(Z + i), vz)));
+            mask |= uint64_t(_mm_movemask_pd(_mm_cmpgt_pd(y, _mm_setzero_pd()))) << i;
+        }
+    } else {
+        const __m128 vy = _mm_set1_ps(oy), vz = _mm_set1_ps(oz), vs = _mm_set1_ps(sy);
+        for (; i + 4 <= n; i += 4) {
+            const __m128 y = _mm_sub_ps(_mm_sub_ps(_mm_loadu_ps(Y + i), vy),
+                                        _mm_mul_ps(vs, _mm_sub_ps(_mm_loadu_ps(Z + i), vz)));
+            mask |= uint64_t(_mm_movemask_ps(_mm_cmpgt_ps(y, _mm_setzero_ps()))) << i;
+        }
+    }
+#endif
+    for (; i < n; ++i) mask |= uint64_t((Y[i] - oy) - sy * (Z[i] - oz) > T(0)) << i;
+    return mask;
+}
+
+}  // namespace
+
 template <class T>
 bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
     // Ray space: z = dominant |d| axis, shear so the ray is the +z axis through the origin.
@@ -283,32 +326,61 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
         y = (Y[i] - oy) - sy * wz;
     };
     int winding = 0, crossings = 0;
-    const size_t n = m_vertices.size();
-    T ax, ay;
-    shear(n - 1, ax, ay);
-    for (size_t i = 0; i < n; ++i) {
-        T bx, by;
-        shear(i, bx, by);
-        // Origin perturbed to (+εx, +εy): a vertex at y == 0 counts as below.
-        const bool aAbove = ay > T(0);
+    // The edge a -> b, whose ends lie on opposite sides of the x axis.
+    const auto crossingEdge = [&](T ax, T ay, T bx, T by) {
         const bool bAbove = by > T(0);
-        if (aAbove != bAbove) {
-            // Evaluate lower endpoint -> upper endpoint, whichever way the polygon runs.
-            const T lx = bAbove ? ax : bx, ly = bAbove ? ay : by;
-            const T ux = bAbove ? bx : ax, uy = bAbove ? by : ay;
-            int s = crossSign(lx, ly, ux, uy);  // > 0: origin left of the upward edge
-            if (s == 0) {
-                // Origin exactly on the edge's line: the perturbation decides,
-                // orient = (ux - lx)·εy - (uy - ly)·εx with uy > ly.
-                s = ux > lx ? 1 : -1;
-            }
-            if (s > 0) {  // the edge crosses the +x axis
-                winding += bAbove ? 1 : -1;
-                ++crossings;
-            }
+        // Evaluate lower endpoint -> upper endpoint, whichever way the polygon runs.
+        const T lx = bAbove ? ax : bx, ly = bAbove ? ay : by;
+        const T ux = bAbove ? bx : ax, uy = bAbove ? by : ay;
+        int s = crossSign(lx, ly, ux, uy);  // > 0: origin left of the upward edge
+        if (s == 0) {
+            // Origin exactly on the edge's line: the perturbation decides,
+            // orient = (ux - lx)·εy - (uy - ly)·εx with uy > ly.
+            s = ux > lx ? 1 : -1;
         }
-        ax = bx;
-        ay = by;
+        if (s > 0) {  // the edge crosses the +x axis
+            winding += bAbove ? 1 : -1;
+            ++crossings;
+        }
+    };
+    // Origin perturbed to (+εx, +εy): a vertex at y == 0 counts as below, and
+    // only an edge with one end above and one below can cross the x axis.
+    const size_t n = m_vertices.size();
+    if (n < kMaskMinVertices) {
+        T ax, ay;
+        shear(n - 1, ax, ay);
+        for (size_t i = 0; i < n; ++i) {
+            T bx, by;
+            shear(i, bx, by);
+            if ((ay > T(0)) != (by > T(0))) crossingEdge(ax, ay, bx, by);
+            ax = bx;
+            ay = by;
+        }
+        return accepts(winding, crossings);
+    }
+    // Many vertices, few crossing edges (a 144-gon of SPD gears has a
+    // handful): the sides of 64 vertices at a time make a bit mask, whose
+    // changes from bit to bit are those edges.
+    const auto edge = [&](size_t a, size_t b) {
+        T ax, ay, bx, by;
+        shear(a, ax, ay);
+        shear(b, bx, by);
+        crossingEdge(ax, ay, bx, by);
+    };
+    const uint64_t first = aboveMask(Y, Z, std::min<size_t>(64, n), oy, oz, sy);
+    // The side of vertex n - 1, the first edge's start.
+    uint64_t previous =
+        n <= 64 ? (first >> (n - 1)) & 1 : aboveMask(Y + (n - 1), Z + (n - 1), 1, oy, oz, sy);
+    for (size_t base = 0; base < n; base += 64) {
+        const size_t m = std::min<size_t>(64, n - base);
+        const uint64_t above = base == 0 ? first : aboveMask(Y + base, Z + base, m, oy, oz, sy);
+        uint64_t changes = above ^ ((above << 1) | previous);
+        if (m < 64) changes &= (uint64_t(1) << m) - 1;
+        for (; changes != 0; changes &= changes - 1) {
+            const size_t b = base + size_t(__builtin_ctzll(changes));
+            edge(b == 0 ? n - 1 : b - 1, b);
+        }
+        previous = (above >> (m - 1)) & 1;
     }
     return accepts(winding, crossings);
 }
