@@ -20,7 +20,7 @@ SurfaceFilter::SurfaceFilter(const Scene& scene, const AccelOptions& options)
             transmits = transmits || (valid(m) && scene.materials[m].transmissive());
             cutsOut = cutsOut || (valid(m) && scene.materials[m].cutsOut(m_cutoff));
         }
-        m_filtered[i] = transmits || cutsOut;
+        m_filtered[i] = uint8_t((transmits ? kTransmits : 0) | (cutsOut ? kCutsOut : 0));
         m_transmits = m_transmits || transmits;
         m_cutsOut = m_cutsOut || cutsOut;
     }

@@ -35,6 +35,10 @@ public:
     bool cutsOut() const { return m_cutsOut; }
     /// Whether candidate hits on `object` must be shown to the filter.
     bool filters(uint32_t object) const { return m_filtered[object] != 0; }
+    /// Whether some material of `object` has an alpha cut-out: the only
+    /// objects whose candidates closest-hit queries and opaque shadow feelers
+    /// must show to the filter (for all others cutOut() is false).
+    bool cutsOut(uint32_t object) const { return (m_filtered[object] & kCutsOut) != 0; }
 
     /// Whether the candidate is a hole: ignored by every ray, as if the
     /// surface were not there.
@@ -55,7 +59,8 @@ private:
     const Scene& m_scene;
     IntersectOptions m_options;
     std::optional<double> m_cutoff;  ///< --alpha-cutoff, else each material's
-    std::vector<uint8_t> m_filtered;  ///< per object
+    static constexpr uint8_t kTransmits = 1, kCutsOut = 2;
+    std::vector<uint8_t> m_filtered;  ///< per object: kTransmits | kCutsOut
     bool m_transmits = false, m_cutsOut = false;
     // Per-instance native thread-local keys: local() is asked once per
     // filtered shadow feeler, and the default key (a hash of the thread id

@@ -77,9 +77,10 @@ void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality qual
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (!o.shape || o.shape->nativeTriangles()) continue;
-        const bool filtered = m_filter.filters(uint32_t(i));
+        const bool cutsOut = m_filter.cutsOut(uint32_t(i));
+        const bool transmits = m_filter.filters(uint32_t(i)) && !cutsOut;
         for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
-            m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), filtered});
+            m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
             m_user.boxes.push_back(
                 namingObject(o, [&] { return toEmbreeBounds(o.shape->bounds(prim), m_origin); }));
         }
@@ -232,12 +233,12 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
     if (hint.primitive < m_user.entries.size()) {
-        // Only unfiltered entries are named (occludedCallback): their exact
-        // test is the whole answer the callback would give. A filtered entry
-        // (a cut-out or a transmitter) would bypass its filter here, so a
-        // hint naming one is ignored: the walk below asks the filter.
+        // Only entries without a cut-out are named (occludedCallback): for an
+        // opaque feeler their exact test is the whole answer the callback
+        // would give. A cut-out would bypass its filter here, so a hint
+        // naming one is ignored: the walk below asks the filter.
         const EmbreeUserTable::Entry& e = m_user.entries[hint.primitive];
-        if (!e.filtered && e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options))
+        if (!e.cutsOut && e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options))
             return true;
     }
     EmbreeQueryContext ctx;

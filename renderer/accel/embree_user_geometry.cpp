@@ -38,7 +38,7 @@ std::optional<ShapeHit> firstKeptHit(const EmbreeUserTable::Entry& e, const Ray&
                                      double tMax, const IntersectOptions& opt,
                                      const SurfaceFilter* filter) {
     std::optional<ShapeHit> h = e.shape->intersect(e.prim, ray, tMin, tMax, opt);
-    if (!e.filtered || !filter) return h;
+    if (!e.cutsOut || !filter) return h;  // cutOut() is false for every other entry
     while (h && filter->cutOut(ray, Hit{h->t, e.object, e.prim, h->u, h->v}))
         h = e.shape->intersect(e.prim, ray, h->t, tMax, opt);  // the next crossing
     return h;
@@ -140,7 +140,9 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     const EmbreeUserTable::Entry& e = table.entries[args->primID];
     const bool exact = n == 1 && ctx.ray != nullptr;
 
-    const bool filtered = e.filtered && ctx.filter;
+    // A transmitter stops an opaque feeler at its first crossing, which is
+    // what its exact test answers; only filtered shadows collect its kt.
+    const bool filtered = ctx.filter && (e.cutsOut || (e.transmits && ctx.shadow));
 
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;

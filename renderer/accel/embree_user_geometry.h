@@ -68,7 +68,8 @@ struct EmbreeUserTable {
         const Shape* shape;
         uint32_t prim;
         uint32_t object;  ///< index into Scene::objects
-        bool filtered;    ///< the surface filter decides about its candidates
+        bool cutsOut;     ///< every query shows its candidates to the surface filter
+        bool transmits;   ///< filtered-shadow feelers (transmittance) show them too
     };
     std::vector<Entry> entries;    ///< indexed by Embree's primID
     std::vector<RTCBounds> boxes;  ///< primID -> padded float box, relative to origin

@@ -270,3 +270,69 @@ TEST_CASE("filtered shadows: the shadow cache changes no feeler's answer") {
     CHECK(blocked > 100);
     CHECK(dimmed > 100);
 }
+
+TEST_CASE("opaque shadows: a transmitter stops the feeler, and the shadow cache may name it") {
+    // The scene of the test above with --shadows opaque: glass casts a black
+    // shadow. An opaque feeler never shows a transmitter to the surface
+    // filter (only cut-outs and filtered shadows need it), so the shadow cache
+    // can name a glass sphere as the occluder to ask first.
+    Scene s = floorScene();
+    s.image.width = 48;
+    s.image.height = 32;
+    s.camera = Camera::perspective({0, 6, 9}, {0, 0, 0}, {0, 1, 0}, 50);
+    const uint32_t solid = addMaterial(s, matte(0.6, 0.1)), clear = addMaterial(s, glass(0.7));
+    addObject(s, makeSphere({-2, 3, 0}, 0.8), solid, Sidedness::Outside);
+    addObject(s, makeSphere({0.5, 2.5, 1}, 0.9), clear, Sidedness::Both);
+    RenderOverrides o;
+    o.shadows = ShadowMode::Opaque;
+    const RenderOptions options = resolveRenderOptions(s, o);
+    const EffectSet effects = analyseEffects(s, options);
+    REQUIRE_FALSE(effects.filteredShadows);
+    EmbreeAccelerator embree(s, options.accelOptions);
+    NaiveAccelerator naive(s, options.accelOptions);
+
+    // Pixels: cached and uncached, through both accelerators, all the same;
+    // the floor is black in both shadows (0.02) and lit elsewhere (0.52).
+    std::vector<Color> reference;
+    for (const Accelerator* accel : {static_cast<const Accelerator*>(&naive),
+                                     static_cast<const Accelerator*>(&embree)}) {
+        const WhittedIntegrator integrator(s, *accel, options, effects);
+        const std::vector<Color> pixels =
+            pixelsWithAndWithoutCache(s, integrator, s.image.width, s.image.height);
+        if (reference.empty()) reference = pixels;
+        REQUIRE(pixels.size() == reference.size());
+        int black = 0;
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            CAPTURE(i);
+            CHECK(reference[i] == pixels[i]);
+            black += pixels[i].r == pixels[i].g && pixels[i].g == pixels[i].b && pixels[i].r < 0.03;
+        }
+        CHECK(black > 40);
+    }
+
+    // Feelers from the floor towards the light: the glass sphere (user entry
+    // 2) blocks some, and a blocked feeler's hint names it; any hint gives
+    // the unhinted answer, and a hint naming the glass answers alone.
+    const Vec3 light{0, 10, 0};
+    int throughGlass = 0;
+    for (int i = 0; i <= 60; ++i) {
+        for (int j = 0; j <= 60; ++j) {
+            const Vec3 from{-3 + 0.1 * i, 0.0, -3 + 0.1 * j};
+            const Ray ray{from, light - from};
+            const bool expected = naive.occluded(ray, 1e-9, 1.0);
+            CHECK(embree.occluded(ray, 1e-9, 1.0) == expected);
+            for (uint32_t entry = 0; entry < 4; ++entry) {
+                OcclusionHint hint{entry == 3 ? OcclusionHint::kNone : entry};
+                CHECK(embree.occluded(ray, 1e-9, 1.0, hint) == expected);
+                if (!expected) CHECK(hint.primitive == OcclusionHint::kNone);
+            }
+            OcclusionHint fresh;
+            embree.occluded(ray, 1e-9, 1.0, fresh);
+            if (fresh.primitive == 2) {
+                ++throughGlass;
+                CHECK(expected);
+            }
+        }
+    }
+    CHECK(throughGlass > 50);
+}
