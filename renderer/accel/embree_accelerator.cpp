@@ -98,6 +98,7 @@ void EmbreeAccelerator::addTriangles(const Scene& scene, RTCBuildQuality quality
         auto g = std::make_unique<EmbreeTriangleGeometry>();
         g->object = uint32_t(i);
         g->filtered = m_filter.filters(uint32_t(i));
+        g->cutsOut = m_filter.cutsOut(uint32_t(i));
         g->origin = m_origin;
         namingObject(o, [&] { attachTriangles(m_device, m_scene.get(), *mesh, quality, *g); });
         if (g->geomId == RTC_INVALID_GEOMETRY_ID) continue;  // no triangle with area

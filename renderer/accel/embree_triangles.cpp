@@ -47,6 +47,8 @@ void filterTriangles(const RTCFilterFunctionNArguments* args) {
             }
         }
         if (!ctx.filter) continue;
+        // A transmitter's candidate is a plain hit but in filtered shadows.
+        if (!g.cutsOut && !(Occlusion && ctx.shadow)) continue;
         const Ray ray = n == 1 && ctx.ray ? *ctx.ray
                                           : Ray{Vec3{RTCRayN_org_x(args->ray, n, i),
                                                      RTCRayN_org_y(args->ray, n, i),

@@ -24,6 +24,7 @@ struct EmbreeTriangleGeometry {
     uint32_t object = 0;    ///< index into Scene::objects
     Sidedness sides = Sidedness::Both;
     bool filtered = false;  ///< the surface filter decides about its candidates
+    bool cutsOut = false;   ///< ... in every query, not only in filtered shadows
     Vec3 origin;            ///< to rebuild world rays from Embree's float lanes
     /// Embree primID -> mesh triangle, empty where they coincide (zero-area
     /// triangles are left out of Embree's copy).

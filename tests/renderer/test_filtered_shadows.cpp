@@ -177,6 +177,12 @@ TEST_CASE("filtered shadows: a transmitting triangle mesh through Embree's filte
         const auto h = a->intersect(Ray{{0.3, 0, 0.1}, Vec3{0, 1, 0}}, 1e-9, kInf);
         REQUIRE(h);
         CHECK(h->object == 1);
+        // Opaque feelers: the glass quad alone stops one (no filter is asked),
+        // and one beside it passes.
+        CHECK(a->occluded(Ray{{0.8, 0, 0.3}, Vec3{0, 4, 0}}, 1e-9, 1.0));
+        CHECK(a->transmittance(Ray{{0.8, 0, 0.3}, Vec3{0, 4, 0}}, 1e-9, 1.0).r ==
+              doctest::Approx(0.7).epsilon(1e-15));
+        CHECK_FALSE(a->occluded(Ray{{1.5, 0, 0}, Vec3{0, 4, 0}}, 1e-9, 1.0));
         ++i;
     }
     CHECK(results[0] == results[1]);
