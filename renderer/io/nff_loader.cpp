@@ -21,13 +21,22 @@
 //   polygons to the analytic polygon primitive. Zero-area polygons are dropped
 //   (they can never be hit; tessellators emit them at poles).
 //
+// Polygons with 4 or more vertices are built (normal, planarity, the inside
+// test's grid) side by side once the file is read, in the objects' order;
+// errors keep the file's order: the first bad polygon is reported, unless
+// the text broke before it.
+//
 // Error locations: a malformed token (not a number, NaN/Inf, out of range) is
 // reported on its own line; a wrong count of numbers or a truncated polygon on
 // the line where the entity starts, since in a token stream the mistake is only
 // noticed at the next entity's keyword.
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -155,7 +164,15 @@ public:
     }
 
     Scene read() {
-        for (std::string_view t = m_tok.next(); !t.empty(); t = m_tok.next()) entity(t);
+        try {
+            for (std::string_view t = m_tok.next(); !t.empty(); t = m_tok.next()) entity(t);
+        } catch (...) {
+            // A polygon read before the broken text may be bad too, and its
+            // line comes first: its error wins, as when each was built in turn.
+            buildPolygons();
+            throw;
+        }
+        buildPolygons();
         return finish();
     }
 
@@ -441,12 +458,16 @@ private:
     }
 
     void addShape(std::unique_ptr<Shape> shape, Sidedness s, const char* kind) {
-        Object o;
         shape->setSidedness(s);
-        o.shape = std::move(shape);
+        addObject(kind).shape = std::move(shape);
+    }
+
+    /// An object of the current material named after the entity's line.
+    Object& addObject(const char* kind) {
+        Object o;
         o.material = currentMaterial();
         o.name = std::string(kind) + "@" + std::to_string(m_entityLine);
-        m_objects.push_back(std::move(o));
+        return m_objects.emplace_back(std::move(o));
     }
 
     void sphere() {
@@ -527,10 +548,45 @@ private:
             addTriangle(mat, patch);
             return;
         }
-        PolygonParams p;
-        p.vertices = m_vertices;
-        p.normals = m_normals;
-        addShape(make([&] { return makePolygon(p); }), sides(false), patch ? "patch" : "polygon");
+        // Built later, with the others (buildPolygons): an object without
+        // its shape until then.
+        PendingPolygon pending{m_objects.size(), m_entityLine, sides(false), {}};
+        pending.params.vertices = m_vertices;
+        pending.params.normals = m_normals;
+        m_pending.push_back(std::move(pending));
+        addObject(patch ? "patch" : "polygon");
+    }
+
+    /// A polygon read, to be built by buildPolygons into objects[object].
+    struct PendingPolygon {
+        size_t object;
+        int line;  ///< where its entity starts, for errors
+        Sidedness sides;
+        PolygonParams params;
+    };
+
+    /// Builds every pending polygon, several at a time (their grids are most
+    /// of an SPD gears load); rethrows the error of the first in file order.
+    void buildPolygons() {
+        std::vector<std::exception_ptr> errors(m_pending.size());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pending.size()),
+                          [&](const tbb::blocked_range<size_t>& range) {
+                              for (size_t i = range.begin(); i != range.end(); ++i) {
+                                  PendingPolygon& p = m_pending[i];
+                                  try {
+                                      std::unique_ptr<Shape> shape = callFactory(
+                                          m_path, p.line, "", [&] { return makePolygon(p.params); });
+                                      shape->setSidedness(p.sides);
+                                      m_objects[p.object].shape = std::move(shape);
+                                  } catch (...) {
+                                      errors[i] = std::current_exception();
+                                  }
+                                  p.params = {};  // its vertices are the polygon's now
+                              }
+                          });
+        m_pending.clear();
+        for (const std::exception_ptr& e : errors)
+            if (e) std::rethrow_exception(e);
     }
 
     /// Zero-area polygons (collinear or repeated vertices) can never be hit;
@@ -655,6 +711,7 @@ private:
     std::vector<NffLight> m_lights;
     std::vector<Material> m_materials;
     std::vector<Object> m_objects;
+    std::vector<PendingPolygon> m_pending;  ///< polygons read, not built yet
     std::vector<Vec3> m_vertices, m_normals;  ///< reused per polygon
     TriangleMesh m_meshes[2][2];                  ///< [patch][two-sided]
     std::vector<uint32_t> m_meshMaterials[2][2];  ///< per-face materials of each

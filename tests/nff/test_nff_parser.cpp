@@ -375,6 +375,38 @@ TEST_CASE("nff: vertex counts are checked against the limit and the bytes left")
                               "numbers (x y z), got 12 numbers ('p' starts on line 8)"));
 }
 
+TEST_CASE("nff: polygons are built after the text, and errors keep the file's order") {
+    const std::string bad = "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n";   // not coplanar
+    const std::string good = "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";  // a unit square
+    // The first of two bad polygons is reported, however many good ones
+    // surround them (they are built several at a time).
+    std::string many = kView;
+    for (int i = 0; i < 500; ++i) many += good;  // lines 8 .. 2507
+    many += bad;                                 // line 2508
+    for (int i = 0; i < 500; ++i) many += good;
+    many += bad;  // line 5013
+    const Failure first = failureOf(many);
+    CHECK(first.line == 2508);
+    CHECK(contains(first.message, "not coplanar"));
+    // A bad polygon before broken text: the polygon's error (its line comes
+    // first), as when each polygon was built as soon as it was read.
+    const Failure before = failureOf(kView + good + bad + "s 0 0 zero 1\n");
+    CHECK(before.line == 13);
+    CHECK(contains(before.message, "not coplanar"));
+    // Broken text before a bad polygon: the text's error.
+    const Failure after = failureOf(kView + good + "s 0 0 zero 1\n" + bad);
+    CHECK(after.line == 13);
+    CHECK(contains(after.message, "expected a number for centre z"));
+    // Every good polygon gets its shape, in order, with the entity's name.
+    Scene s = loadNffScene(kView + good + "s 0 0 -5 1\n" + good, "t.nff");
+    REQUIRE(s.objects.size() == 3);
+    CHECK(s.objects[0].name == "polygon@8");
+    CHECK(s.objects[1].name == "sphere@13");
+    CHECK(s.objects[2].name == "polygon@14");
+    for (const Object& o : s.objects) CHECK(bool(o.shape));
+    CHECK(std::string(s.objects[2].shape->kind()) == "polygon");
+}
+
 TEST_CASE("nff: loadScene dispatches .nff and reports the file name") {
     // A path that does not exist: the error names it (line 0).
     try {
