@@ -109,7 +109,10 @@ public:
     /// NaN-safe), or nothing.
     virtual std::optional<ShapeHit> intersect(uint32_t prim, const Ray& ray, double tMin,
                                               double tMax, const IntersectOptions& opt) const = 0;
-    /// Any accepted hit on primitive `prim` with tMin < t < tMax.
+    /// Any accepted hit on primitive `prim` with tMin < t < tMax. An override
+    /// must answer exactly intersect(...).has_value(): an accelerator may ask
+    /// either for the same feeler (Embree's opaque feelers and shadow-cache
+    /// hints ask this; the naive loop's filtered objects ask intersect()).
     virtual bool occluded(uint32_t prim, const Ray& ray, double tMin, double tMax,
                           const IntersectOptions& opt) const {
         return intersect(prim, ray, tMin, tMax, opt).has_value();

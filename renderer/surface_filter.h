@@ -33,7 +33,8 @@ public:
     bool transmits() const { return m_transmits; }
     /// Whether some object has an alpha cut-out.
     bool cutsOut() const { return m_cutsOut; }
-    /// Whether candidate hits on `object` must be shown to the filter.
+    /// Whether candidate hits on `object` may need the filter: it cuts out
+    /// (every query) or transmits (filtered-shadow feelers only).
     bool filters(uint32_t object) const { return m_filtered[object] != 0; }
     /// Whether some material of `object` has an alpha cut-out: the only
     /// objects whose candidates closest-hit queries and opaque shadow feelers

@@ -69,7 +69,8 @@ struct EmbreeUserTable {
         uint32_t prim;
         uint32_t object;  ///< index into Scene::objects
         bool cutsOut;     ///< every query shows its candidates to the surface filter
-        bool transmits;   ///< filtered-shadow feelers (transmittance) show them too
+        bool transmits;   ///< transmits and has no cut-out: shown to the filter only by
+                          ///< filtered-shadow feelers (transmittance)
     };
     std::vector<Entry> entries;    ///< indexed by Embree's primID
     std::vector<RTCBounds> boxes;  ///< primID -> padded float box, relative to origin

@@ -168,8 +168,15 @@ public:
             for (std::string_view t = m_tok.next(); !t.empty(); t = m_tok.next()) entity(t);
         } catch (...) {
             // A polygon read before the broken text may be bad too, and its
-            // line comes first: its error wins, as when each was built in turn.
-            buildPolygons();
+            // line comes first: its error wins, as when each was built in
+            // turn. Anything else going wrong in that build (memory, threads)
+            // leaves the text's own error to be reported.
+            try {
+                buildPolygons();
+            } catch (const InputError&) {
+                throw;
+            } catch (...) {
+            }
             throw;
         }
         buildPolygons();
@@ -550,11 +557,12 @@ private:
         }
         // Built later, with the others (buildPolygons): an object without
         // its shape until then.
-        PendingPolygon pending{m_objects.size(), m_entityLine, sides(false), {}};
+        // The object first: a pending polygon always names one that exists.
+        addObject(patch ? "patch" : "polygon");
+        PendingPolygon pending{m_objects.size() - 1, m_entityLine, sides(false), {}};
         pending.params.vertices = m_vertices;
         pending.params.normals = m_normals;
         m_pending.push_back(std::move(pending));
-        addObject(patch ? "patch" : "polygon");
     }
 
     /// A polygon read, to be built by buildPolygons into objects[object].

@@ -34,8 +34,14 @@ int exactCrossSign(float ax, float ay, float bx, float by) {
     const double d = double(ax) * double(by) - double(ay) * double(bx);
     return (d > 0) - (d < 0);
 }
+#if defined(__SIZEOF_FLOAT128__)
+using Quad = __float128;
+#else
+using Quad = long double;  // binary128 where there is no __float128 (aarch64)
+static_assert(std::numeric_limits<long double>::digits >= 106, "needs a 106-bit significand");
+#endif
 int exactCrossSign(double ax, double ay, double bx, double by) {
-    const __float128 d = __float128(ax) * __float128(by) - __float128(ay) * __float128(bx);
+    const Quad d = Quad(ax) * Quad(by) - Quad(ay) * Quad(bx);
     return (d > 0) - (d < 0);
 }
 
@@ -153,7 +159,9 @@ void compare(const Polygon& poly, Precision precision, SplitMix64& rng, int coun
 
 TEST_CASE("polygon watertight test: bit masks of 64 vertices give the textbook loop's answers") {
     SplitMix64 rng(2026);
-    const std::vector<size_t> sizes{3, 4, 5, 8, 31, 63, 64, 65, 66, 127, 128, 129, 144, 200, 257};
+    // Both sides of the 16-vertex threshold and of every 64-vertex block.
+    const std::vector<size_t> sizes{3,  4,  5,  8,   15,  16,  17,  31,  63,
+                                    64, 65, 66, 127, 128, 129, 144, 200, 257};
     // Tilted planes (every dominant axis) and the coordinate planes (exact
     // zeros), near the origin and far from it.
     const std::vector<Vec3> normals{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {0.3, -0.5, 0.8},

@@ -393,16 +393,33 @@ TEST_CASE("nff: polygons are built after the text, and errors keep the file's or
     const Failure before = failureOf(kView + good + bad + "s 0 0 zero 1\n");
     CHECK(before.line == 13);
     CHECK(contains(before.message, "not coplanar"));
+    // A bad polygon before a bad sphere (a factory error at its own line)
+    // and before a missing viewpoint (a file-level error at the end): the
+    // polygon's error, as when each was built in turn.
+    const Failure beforeSphere = failureOf(kView + bad + "s 0 0 0 0\n");
+    CHECK(beforeSphere.line == 8);
+    CHECK(contains(beforeSphere.message, "not coplanar"));
+    const Failure beforeEnd = failureOf("s 0 0 0 1\n" + bad);
+    CHECK(beforeEnd.line == 2);
+    CHECK(contains(beforeEnd.message, "not coplanar"));
+    // A bad patch (pp, vertex normals) is reported alike.
+    const Failure patch =
+        failureOf(kView + "pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 1 0 0 1\n");
+    CHECK(patch.line == 8);
+    CHECK(contains(patch.message, "not coplanar"));
     // Broken text before a bad polygon: the text's error.
     const Failure after = failureOf(kView + good + "s 0 0 zero 1\n" + bad);
     CHECK(after.line == 13);
     CHECK(contains(after.message, "expected a number for centre z"));
     // Every good polygon gets its shape, in order, with the entity's name.
-    Scene s = loadNffScene(kView + good + "s 0 0 -5 1\n" + good, "t.nff");
-    REQUIRE(s.objects.size() == 3);
+    Scene s = loadNffScene(kView + good + "s 0 0 -5 1\n" + good +
+                               "pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0 0 0 1\n",
+                           "t.nff");
+    REQUIRE(s.objects.size() == 4);
     CHECK(s.objects[0].name == "polygon@8");
     CHECK(s.objects[1].name == "sphere@13");
     CHECK(s.objects[2].name == "polygon@14");
+    CHECK(s.objects[3].name == "patch@19");
     for (const Object& o : s.objects) CHECK(bool(o.shape));
     CHECK(std::string(s.objects[2].shape->kind()) == "polygon");
 }
