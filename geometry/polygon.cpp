@@ -361,24 +361,18 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
     // Many vertices, few crossing edges (a 144-gon of SPD gears has a
     // handful): the sides of 64 vertices at a time make a bit mask, whose
     // changes from bit to bit are those edges.
-    const auto edge = [&](size_t a, size_t b) {
-        T ax, ay, bx, by;
-        shear(a, ax, ay);
-        shear(b, bx, by);
-        crossingEdge(ax, ay, bx, by);
-    };
-    const uint64_t first = aboveMask(Y, Z, std::min<size_t>(64, n), oy, oz, sy);
-    // The side of vertex n - 1, the first edge's start.
-    uint64_t previous =
-        n <= 64 ? (first >> (n - 1)) & 1 : aboveMask(Y + (n - 1), Z + (n - 1), 1, oy, oz, sy);
+    uint64_t previous = aboveMask(Y + (n - 1), Z + (n - 1), 1, oy, oz, sy);  // the first edge's start
     for (size_t base = 0; base < n; base += 64) {
         const size_t m = std::min<size_t>(64, n - base);
-        const uint64_t above = base == 0 ? first : aboveMask(Y + base, Z + base, m, oy, oz, sy);
+        const uint64_t above = aboveMask(Y + base, Z + base, m, oy, oz, sy);
         uint64_t changes = above ^ ((above << 1) | previous);
         if (m < 64) changes &= (uint64_t(1) << m) - 1;
         for (; changes != 0; changes &= changes - 1) {
             const size_t b = base + size_t(__builtin_ctzll(changes));
-            edge(b == 0 ? n - 1 : b - 1, b);
+            T ax, ay, bx, by;
+            shear(b == 0 ? n - 1 : b - 1, ax, ay);
+            shear(b, bx, by);
+            crossingEdge(ax, ay, bx, by);
         }
         previous = (above >> (m - 1)) & 1;
     }

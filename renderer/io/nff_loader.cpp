@@ -36,11 +36,11 @@
 
 #include <charconv>
 #include <cmath>
-#include <exception>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -555,9 +555,8 @@ private:
             addTriangle(mat, patch);
             return;
         }
-        // Built later, with the others (buildPolygons): an object without
-        // its shape until then.
-        // The object first: a pending polygon always names one that exists.
+        // Built later, with the others (buildPolygons): the object is added
+        // now, without its shape, so that a pending polygon names one that exists.
         addObject(patch ? "patch" : "polygon");
         PendingPolygon pending{m_objects.size() - 1, m_entityLine, sides(false), {}};
         pending.params.vertices = m_vertices;
