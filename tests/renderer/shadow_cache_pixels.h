@@ -1,11 +1,15 @@
 #pragma once
 // Shared by the tests that the shadow cache changes no pixel (cut-outs,
-// filtered shadows): every pixel centre traced with and without a cache.
+// filtered and opaque shadows through glass): every pixel centre traced with
+// and without a cache, through both accelerators.
 
 #include <doctest/doctest.h>
 
 #include <vector>
 
+#include "renderer/accel/accelerator.h"
+#include "renderer/effects.h"
+#include "renderer/render_options.h"
 #include "renderer/scene.h"
 #include "renderer/shadow_cache.h"
 #include "renderer/whitted_integrator.h"
@@ -36,6 +40,28 @@ inline std::vector<Color> pixelsWithAndWithoutCache(const Scene& scene,
             CHECK(cached.b == uncached.b);
             pixels.push_back(cached);
         }
+    }
+    return pixels;
+}
+
+/// pixelsWithAndWithoutCache through the naive loop and through Embree (two
+/// independent paths): checks that both give the same bits at every pixel;
+/// returns the pixels.
+inline std::vector<Color> pixelsInBothAccelerators(const Scene& scene, const Accelerator& naive,
+                                                   const Accelerator& embree,
+                                                   const RenderOptions& options,
+                                                   const EffectSet& effects, int width,
+                                                   int height) {
+    const WhittedIntegrator fromNaive(scene, naive, options, effects);
+    const WhittedIntegrator fromEmbree(scene, embree, options, effects);
+    const std::vector<Color> reference = pixelsWithAndWithoutCache(scene, fromNaive, width, height);
+    const std::vector<Color> pixels = pixelsWithAndWithoutCache(scene, fromEmbree, width, height);
+    REQUIRE(pixels.size() == reference.size());
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        CAPTURE(i);
+        CHECK(reference[i].r == pixels[i].r);
+        CHECK(reference[i].g == pixels[i].g);
+        CHECK(reference[i].b == pixels[i].b);
     }
     return pixels;
 }
