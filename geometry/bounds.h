@@ -34,13 +34,24 @@ struct Bounds3 {
     /// The box grown by a relative margin of a few float ulps of its largest
     /// coordinate. Embree's user-geometry traversal never runs in robust mode
     /// and stores boxes in float, so exact boxes can lose grazing hits.
-    Bounds3 padded(double relative = 4.0 * FLT_EPSILON) const {
+    Bounds3 padded(double relative = 4.0 * FLT_EPSILON) const { return grown(padding(relative)); }
+    /// The margin padded() adds.
+    double padding(double relative = 4.0 * FLT_EPSILON) const {
         const double m = std::max(maxComponent(abs(lo)), maxComponent(abs(hi)));
-        const double pad = relative * std::max(m, 1e-30) + 1e-30;
+        return relative * std::max(m, 1e-30) + 1e-30;
+    }
+    /// The box grown by `margin` on every side.
+    Bounds3 grown(double margin) const {
         Bounds3 b = *this;
-        b.lo -= Vec3{pad, pad, pad};
-        b.hi += Vec3{pad, pad, pad};
+        b.lo -= Vec3{margin, margin, margin};
+        b.hi += Vec3{margin, margin, margin};
         return b;
+    }
+    /// Surface area: proportional to the chance that a random ray meets the
+    /// box (the surface area heuristic's measure).
+    double surfaceArea() const {
+        const Vec3 e = extent();
+        return 2 * (e.x * e.y + e.y * e.z + e.z * e.x);
     }
 };
 

@@ -25,13 +25,57 @@ Cone::Cone(const ConeParams& p)
 
 const char* Cone::kind() const { return m_r0 == m_r1 ? "cylinder" : "cone"; }
 
-Bounds3 Cone::bounds() const {
-    const Vec3 apex = m_base + m_frame.n * m_height;
-    const Vec3 e0 = diskHalfExtent(m_frame.n, m_r0);
-    const Vec3 e1 = diskHalfExtent(m_frame.n, m_r1);
-    Bounds3 b(m_base - e0, m_base + e0);
-    b.expand(Bounds3(apex - e1, apex + e1));
-    return b.padded();
+double Cone::radiusAt(double z) const {
+    // Exactly the given radii at the ends (r0 + k·height need not round to r1).
+    return z == 0.0 ? m_r0 : z == m_height ? m_r1 : m_r0 + m_slope * z;
+}
+
+Bounds3 Cone::sliceBox(double z0, double z1) const {
+    const Vec3 c0 = m_base + m_frame.n * z0, c1 = m_base + m_frame.n * z1;
+    const Vec3 e0 = diskHalfExtent(m_frame.n, radiusAt(z0));
+    const Vec3 e1 = diskHalfExtent(m_frame.n, radiusAt(z1));
+    Bounds3 b(c0 - e0, c0 + e0);
+    b.expand(Bounds3(c1 - e1, c1 + e1));
+    return b;
+}
+
+Bounds3 Cone::bounds() const { return sliceBox(0.0, m_height).padded(); }
+
+void Cone::appendCoveringBoxes(uint32_t, std::vector<Bounds3>& out) const {
+    // A slice of the solid is the convex hull of its two end disks, so the
+    // slices' boxes contain it; adjacent slices share an end disk.
+    const auto end = [&](int i, int n) { return i == n ? m_height : m_height * i / n; };
+    // The choice needs only the slices' areas: per axis, the box of the two
+    // end disks spans from the lower of centre - half-extent to the higher
+    // of centre + half-extent, with half-extents r·sqrt(1 - n_i²).
+    const Vec3 unitDisk = diskHalfExtent(m_frame.n, 1.0);
+    const auto sliceArea = [&](double z0, double z1) {
+        double extent[3];
+        for (int a = 0; a < 3; ++a) {
+            const double c0 = m_frame.n[a] * z0, c1 = m_frame.n[a] * z1;
+            const double e0 = unitDisk[a] * radiusAt(z0), e1 = unitDisk[a] * radiusAt(z1);
+            extent[a] = std::max(c0 + e0, c1 + e1) - std::min(c0 - e0, c1 - e1);
+        }
+        return 2 * (extent[0] * extent[1] + extent[1] * extent[2] + extent[2] * extent[0]);
+    };
+    int best = 1;
+    double bestArea = kCoveringAreaGain * sliceArea(0.0, m_height);
+    for (int n = 2; n <= kMaxCoveringBoxes; ++n) {
+        double area = 0;
+        for (int i = 0; i < n; ++i) area += sliceArea(end(i, n), end(i + 1, n));
+        if (area <= bestArea) {
+            best = n;
+            bestArea = area;
+        }
+    }
+    if (best == 1) {
+        out.push_back(bounds());
+        return;
+    }
+    // Each slice gets the whole box's margin, which covers the rounding of the test.
+    const double margin = sliceBox(0.0, m_height).padding();
+    for (int i = 0; i < best; ++i)
+        out.push_back(sliceBox(end(i, best), end(i + 1, best)).grown(margin));
 }
 
 template <class T>

@@ -24,6 +24,15 @@ public:
 
     /// Box of the two end disks (r·sqrt(1 - a_i²) per axis around each end), padded.
     Bounds3 bounds() const override;
+    /// Boxes of equal lengths of the axis, each the box of its two end disks
+    /// and grown by the margin of bounds(): the count of 2 to
+    /// kMaxCoveringBoxes with the least total surface area when that total is
+    /// at most kCoveringAreaGain of the one box's, else the one box. About
+    /// four for a long thin cylinder at 45° to two axes, one for an upright
+    /// one or a short fat one.
+    void appendCoveringBoxes(uint32_t prim, std::vector<Bounds3>& out) const override;
+    static constexpr int kMaxCoveringBoxes = 4;
+    static constexpr double kCoveringAreaGain = 0.7;
     /// Closest accepted hit on the side (0 <= z <= height, rim included) or on a
     /// cap (distance from the axis <= the end radius). Facing is the sign of
     /// dot(d, outward normal), taken exactly from the root structure for the
@@ -50,6 +59,12 @@ public:
     bool capped() const { return m_capped; }
 
 private:
+    /// Box of the part of the solid between heights z0 <= z1 along the axis
+    /// (the box of its two end disks), unpadded.
+    Bounds3 sliceBox(double z0, double z1) const;
+    /// Radius of the solid at height z (exactly r0 and r1 at the ends).
+    double radiusAt(double z) const;
+
     Vec3 m_base;
     Frame m_frame;  ///< n = unit axis from base to apex
     double m_height;

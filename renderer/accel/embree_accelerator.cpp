@@ -74,15 +74,21 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& opt
 
 void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality quality) {
     m_user.origin = m_origin;
+    std::vector<Bounds3> boxes;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (!o.shape || o.shape->nativeTriangles()) continue;
         const bool cutsOut = m_filter.cutsOut(uint32_t(i));
         const bool transmits = m_filter.filters(uint32_t(i)) && !cutsOut;
         for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
-            m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
-            m_user.boxes.push_back(
-                namingObject(o, [&] { return toEmbreeBounds(o.shape->bounds(prim), m_origin); }));
+            // One entry per covering box, all naming the same primitive.
+            boxes.clear();
+            o.shape->appendCoveringBoxes(prim, boxes);
+            for (const Bounds3& box : boxes) {
+                m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
+                m_user.boxes.push_back(
+                    namingObject(o, [&] { return toEmbreeBounds(box, m_origin); }));
+            }
         }
     }
     if (m_user.entries.empty()) return;

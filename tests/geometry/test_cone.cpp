@@ -7,10 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "geometry/cone.h"
+#include "geometry/frame.h"
 #include "geometry/geometry_test_helpers.h"
 #include "geometry/primitives.h"
+#include "geometry/random.h"
 #include "shape_queries.h"
 
 using namespace raylab;
@@ -295,4 +298,85 @@ TEST_CASE("cone: factory validates its parameters") {
     CHECK_THROWS_AS(cone({0, 0, 0}, std::nan(""), {0, 0, 1}, 1), std::invalid_argument);
     CHECK_THROWS_AS(cone({0, 0, kInf}, 1, {0, 0, 1}, 1), std::invalid_argument);
     CHECK_NOTHROW(cone({0, 0, 0}, 0, {0, 0, 1}, 1));  // apex at the base end is fine
+}
+
+TEST_CASE("cone: covering boxes of a slanted cylinder, hand-computed") {
+    // Axis (0,0,0) -> (4,4,0), radius 0.1: each end disk spans 0.1·sqrt(1/2)
+    // in x and y and 0.1 in z. One box: extents 4.1414, 4.1414, 0.2, area
+    // 37.6; four slices: 1.1414, 1.1414, 0.2, area 3.52 each, 14.1 in all
+    // (37%); three slices 16.6, two 20.1: four it is.
+    const auto cyl = cone({0, 0, 0}, 0.1, {4, 4, 0}, 0.1);
+    std::vector<Bounds3> boxes;
+    cyl->appendCoveringBoxes(0, boxes);
+    REQUIRE(boxes.size() == 4);
+    const double e = 0.1 * std::sqrt(0.5);
+    Bounds3 whole({-e, -e, -0.1}, {4 + e, 4 + e, 0.1});
+    const double margin = whole.padding();
+    for (int i = 0; i < 4; ++i) {
+        CAPTURE(i);
+        checkVec(boxes[i].lo, Vec3{i - e - margin, i - e - margin, -0.1 - margin});
+        checkVec(boxes[i].hi, Vec3{i + 1 + e + margin, i + 1 + e + margin, 0.1 + margin});
+    }
+    // The one box a renderer used before: the same box, padded.
+    checkVec(cyl->bounds(0).lo, whole.padded().lo, 1e-15);
+    checkVec(cyl->bounds(0).hi, whole.padded().hi, 1e-15);
+
+    // Upright, or short and fat: one box, the padded bounds themselves.
+    for (const auto& one : {cone({1, 2, 3}, 0.1, {1, 2, 9}, 0.1), cone({0, 0, 0}, 1, {1, 1, 0}, 1),
+                            cone({0, 0, 0}, 2, {4, 4, 0}, 0.5, true)}) {
+        boxes.clear();
+        one->appendCoveringBoxes(0, boxes);
+        REQUIRE(boxes.size() == 1);
+        CHECK(boxes[0].lo == one->bounds(0).lo);
+        CHECK(boxes[0].hi == one->bounds(0).hi);
+    }
+}
+
+TEST_CASE("cone: covering boxes contain every surface point and stay inside the bounds") {
+    // Random cylinders, cones and truncated cones, capped, in every
+    // orientation: points of the side and of both caps each lie in some box,
+    // and every box lies in bounds() (never a looser cover).
+    SplitMix64 rng(2026);
+    int split = 0;
+    for (int shape = 0; shape < 300; ++shape) {
+        const Vec3 base = rng.point(-50, 50);
+        const Vec3 axis = rng.direction() * rng.uniform(0.5, 20);
+        const double r0 = rng.uniform(0.01, 1.0);
+        const double r1 = shape % 3 == 0 ? r0 : shape % 3 == 1 ? 0.0 : rng.uniform(0.01, 1.0);
+        const auto c = cone(base, r0, base + axis, r1, true);
+        const auto& solid = static_cast<const Cone&>(*c);
+        std::vector<Bounds3> boxes;
+        solid.appendCoveringBoxes(0, boxes);
+        REQUIRE(!boxes.empty());
+        REQUIRE(boxes.size() <= size_t(Cone::kMaxCoveringBoxes));
+        split += boxes.size() > 1;
+        const Bounds3 whole = solid.bounds();
+        for (const Bounds3& b : boxes) {
+            // Within the whole box up to rounding of the slice ends.
+            const double slack = 1e-12 * (1 + maxComponent(abs(whole.hi)));
+            CHECK(b.lo.x >= whole.lo.x - slack);
+            CHECK(b.lo.y >= whole.lo.y - slack);
+            CHECK(b.lo.z >= whole.lo.z - slack);
+            CHECK(b.hi.x <= whole.hi.x + slack);
+            CHECK(b.hi.y <= whole.hi.y + slack);
+            CHECK(b.hi.z <= whole.hi.z + slack);
+        }
+        const Frame f = Frame::fromNormal(solid.axis());
+        for (int k = 0; k < 200; ++k) {
+            const double phi = rng.uniform(0, 2 * 3.141592653589793);
+            const int part = k % 4;  // side twice as often as each cap
+            const double z = part == 2 ? 0.0 : part == 3 ? solid.height()
+                                                         : rng.uniform(0, solid.height());
+            const double rz = r0 + (r1 - r0) * (z / solid.height());
+            const double rho = part >= 2 ? rng.uniform(0, rz) : rz;
+            const Vec3 p =
+                base + f.n * z + f.t * (rho * std::cos(phi)) + f.b * (rho * std::sin(phi));
+            bool inside = false;
+            for (const Bounds3& b : boxes) inside = inside || b.contains(p);
+            CAPTURE(shape);
+            CAPTURE(k);
+            CHECK(inside);
+        }
+    }
+    CHECK(split > 100);  // most of these long shapes are split
 }
