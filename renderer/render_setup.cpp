@@ -1,5 +1,7 @@
 #include "renderer/render_setup.h"
 
+#include <vector>
+
 #include "renderer/film.h"
 #include "renderer/io/errors.h"
 
@@ -62,12 +64,30 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
     return r;
 }
 
-MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives) {
+size_t acceleratorEntries(const Scene& scene) {
+    size_t n = 0;
+    std::vector<Bounds3> boxes;
+    for (const Object& o : scene.objects) {
+        if (!o.shape) continue;
+        if (o.shape->nativeTriangles()) {
+            n += o.shape->primitiveCount();
+            continue;
+        }
+        for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
+            boxes.clear();
+            o.shape->appendCoveringBoxes(prim, boxes);
+            n += boxes.size();
+        }
+    }
+    return n;
+}
+
+MemoryEstimate estimateRenderMemory(int width, int height, size_t entries) {
     MemoryEstimate e;
     // RGBA, Z, distance, N, albedo, objectId floats and the Cryptomatte ranks.
     e.filmBytes = double(width) * double(height) *
                   ((4 + 1 + 1 + 3 + 3 + 1) * sizeof(float) + kMatteRanks * sizeof(MatteEntry)) * 2.0;
-    e.accelBytes = double(primitives) * 128.0;
+    e.accelBytes = double(entries) * 128.0;
     return e;
 }
 
@@ -78,7 +98,8 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options) {
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
                        const std::optional<MemoryLimit>& limit) {
     const size_t primitives = scene.primitiveCount();
-    const MemoryEstimate e = estimateRenderMemory(options.width, options.height, primitives);
+    const MemoryEstimate e =
+        estimateRenderMemory(options.width, options.height, acceleratorEntries(scene));
     if (!limit || e.total() <= limit->bytes) return;
     const std::string image =
         "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";

@@ -26,10 +26,15 @@ struct MemoryEstimate {
 };
 
 /// Film: 12 floats per pixel (RGBA, Z, N, albedo, objectId), twice (the
-/// encoders copy it). Accelerator: 128 bytes per primitive, from a measured
-/// 138 bytes per triangle of a 524k-triangle checkerboard including raylab's
-/// own double mesh (already allocated when this is asked).
-MemoryEstimate estimateRenderMemory(int width, int height, size_t primitives);
+/// encoders copy it). Accelerator: 128 bytes per entry (acceleratorEntries),
+/// from a measured 138 bytes per triangle of a 524k-triangle checkerboard
+/// including raylab's own double mesh (already allocated when this is asked).
+MemoryEstimate estimateRenderMemory(int width, int height, size_t entries);
+
+/// What the accelerator indexes: a box per triangle, and the covering boxes
+/// (Shape::appendCoveringBoxes) of every other primitive, up to four for a
+/// long slanted cylinder. The memory estimate counts these, not primitives.
+size_t acceleratorEntries(const Scene& scene);
 
 /// Refuses (InputError) a render whose film and acceleration structure would
 /// not fit in what this process may still allocate (tightestMemoryLimit:

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "geometry/primitives.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/memory_limit.h"
@@ -379,4 +380,38 @@ TEST_CASE("memory guard: a JPEG, HDR or TIFF output OpenImageIO cannot be mapped
     CHECK(refused > 0);
     CHECK(written > 0);
 #endif
+}
+
+TEST_CASE("memory guard: long slanted cylinders count each of their Embree boxes") {
+    // 1,000 cylinders of length 10 and radius 0.05: along z each keeps one box
+    // (128 bytes in the estimate), along (1, 1, 0) each is indexed as four.
+    const auto cylinders = [](raylab::Vec3 axis) {
+        raylab::Scene scene;
+        scene.sourcePath = "rods.json";
+        for (int i = 0; i < 1000; ++i) {
+            raylab::ConeParams p;
+            p.base = {double(i), 0, 0};
+            p.apex = p.base + axis;
+            p.baseRadius = p.apexRadius = 0.05;
+            raylab::Object o;
+            o.name = "rod";
+            o.shape = raylab::makeCone(p);
+            scene.objects.push_back(std::move(o));
+        }
+        return scene;
+    };
+    const raylab::Scene upright = cylinders({0, 0, 10}), slanted = cylinders({7.07, 7.07, 0});
+    CHECK(raylab::acceleratorEntries(upright) == 1000);
+    CHECK(raylab::acceleratorEntries(slanted) == 4000);
+    raylab::RenderOptions o;
+    o.width = o.height = 1;
+    const raylab::MemoryLimit limit{300000.0, "x"};  // between 128,000 and 512,000 bytes
+    CHECK_NOTHROW(raylab::checkMemoryBudget(upright, o, limit));
+    try {
+        raylab::checkMemoryBudget(slanted, o, limit);
+        FAIL("512,000 bytes passed a 300,000-byte limit");
+    } catch (const raylab::InputError& e) {
+        CHECK(std::string(e.what()).find("of 1000 primitives") != std::string::npos);
+        CHECK(std::string(e.what()).find("acceleration structure 500 KiB") != std::string::npos);
+    }
 }
