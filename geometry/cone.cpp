@@ -41,7 +41,12 @@ Bounds3 Cone::sliceBox(double z0, double z1) const {
 
 Bounds3 Cone::bounds() const { return sliceBox(0.0, m_height).padded(); }
 
-void Cone::appendCoveringBoxes(uint32_t, std::vector<Bounds3>& out) const {
+void Cone::appendCoveringBoxes(uint32_t, const IntersectOptions& opt,
+                               std::vector<Bounds3>& out) const {
+    if (opt.precision != Precision::Double) {
+        out.push_back(bounds());
+        return;
+    }
     // A slice of the solid is the convex hull of its two end disks, so the
     // slices' boxes contain it; adjacent slices share an end disk.
     const auto end = [&](int i, int n) { return i == n ? m_height : m_height * i / n; };

@@ -24,13 +24,18 @@ public:
 
     /// Box of the two end disks (r·sqrt(1 - a_i²) per axis around each end), padded.
     Bounds3 bounds() const override;
-    /// Boxes of equal lengths of the axis, each the box of its two end disks
-    /// and grown by the margin of bounds(): the count of 2 to
-    /// kMaxCoveringBoxes with the least total surface area when that total is
-    /// at most kCoveringAreaGain of the one box's, else the one box. About
+    /// Double precision: boxes of equal lengths of the axis, each the box of
+    /// its two end disks and grown by the margin of bounds(): the count of 2
+    /// to kMaxCoveringBoxes with the least total surface area when that total
+    /// is at most kCoveringAreaGain of the one box's, else the one box. About
     /// four for a long thin cylinder at 45° to two axes, one for an upright
-    /// one or a short fat one.
-    void appendCoveringBoxes(uint32_t prim, std::vector<Bounds3>& out) const override;
+    /// one or a short fat one. Float precision: bounds() alone, because a float
+    /// hit may stray from the surface by about FLT_EPSILON times the ray
+    /// origin's distance, which no margin fixed here bounds, and the slices'
+    /// boxes meet the surface at their shared ends (one loose box keeps what
+    /// float renders always had).
+    void appendCoveringBoxes(uint32_t prim, const IntersectOptions& opt,
+                             std::vector<Bounds3>& out) const override;
     static constexpr int kMaxCoveringBoxes = 4;
     static constexpr double kCoveringAreaGain = 0.7;
     /// Closest accepted hit on the side (0 <= z <= height, rim included) or on a

@@ -105,14 +105,17 @@ public:
     virtual Bounds3 bounds(uint32_t prim) const = 0;
     /// Box of the whole shape.
     virtual Bounds3 bounds() const = 0;
-    /// Appends boxes that together cover primitive `prim`, for an accelerator
-    /// to index one by one: for a long slanted primitive, whose one box is
-    /// mostly empty, a few shorter boxes are met by far fewer rays (the idea
-    /// of Embree's spatial splits for triangles). Each box stands for the
-    /// whole primitive: whichever a ray enters, the accelerator tests the
-    /// whole primitive, so a ray that enters several tests it more than once
-    /// and gets the same answer. Default: bounds(prim) alone.
-    virtual void appendCoveringBoxes(uint32_t prim, std::vector<Bounds3>& out) const {
+    /// Appends boxes that together cover primitive `prim` and every hit that
+    /// intersect(prim, ..., opt) can report, for an accelerator to index one
+    /// by one: for a long slanted primitive, whose one box is mostly empty, a
+    /// few shorter boxes are met by far fewer rays (the idea of Embree's
+    /// spatial splits for triangles). Each box stands for the whole primitive:
+    /// whichever a ray enters, the accelerator tests the whole primitive, so a
+    /// ray that enters several tests it more than once and gets the same
+    /// answer. Default: bounds(prim) alone.
+    virtual void appendCoveringBoxes(uint32_t prim, const IntersectOptions& opt,
+                                     std::vector<Bounds3>& out) const {
+        (void)opt;
         out.push_back(bounds(prim));
     }
 

@@ -64,7 +64,7 @@ RenderOptions resolveRenderOptions(const Scene& scene, const RenderOverrides& o)
     return r;
 }
 
-size_t acceleratorEntries(const Scene& scene) {
+size_t acceleratorEntries(const Scene& scene, const IntersectOptions& opt) {
     size_t n = 0;
     std::vector<Bounds3> boxes;
     for (const Object& o : scene.objects) {
@@ -75,7 +75,7 @@ size_t acceleratorEntries(const Scene& scene) {
         }
         for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
             boxes.clear();
-            o.shape->appendCoveringBoxes(prim, boxes);
+            o.shape->appendCoveringBoxes(prim, opt, boxes);
             n += boxes.size();
         }
     }
@@ -99,7 +99,8 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
                        const std::optional<MemoryLimit>& limit) {
     const size_t primitives = scene.primitiveCount();
     const MemoryEstimate e =
-        estimateRenderMemory(options.width, options.height, acceleratorEntries(scene));
+        estimateRenderMemory(options.width, options.height,
+                             acceleratorEntries(scene, options.accelOptions.intersect));
     if (!limit || e.total() <= limit->bytes) return;
     const std::string image =
         "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";

@@ -32,9 +32,10 @@ struct MemoryEstimate {
 MemoryEstimate estimateRenderMemory(int width, int height, size_t entries);
 
 /// What the accelerator indexes: a box per triangle, and the covering boxes
-/// (Shape::appendCoveringBoxes) of every other primitive, up to four for a
-/// long slanted cylinder. The memory estimate counts these, not primitives.
-size_t acceleratorEntries(const Scene& scene);
+/// (Shape::appendCoveringBoxes with `opt`) of every other primitive, up to
+/// four for a long slanted cylinder. The memory estimate counts these, not
+/// primitives.
+size_t acceleratorEntries(const Scene& scene, const IntersectOptions& opt);
 
 /// Refuses (InputError) a render whose film and acceleration structure would
 /// not fit in what this process may still allocate (tightestMemoryLimit:

@@ -83,7 +83,7 @@ void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality qual
         for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
             // One entry per covering box, all naming the same primitive.
             boxes.clear();
-            o.shape->appendCoveringBoxes(prim, boxes);
+            o.shape->appendCoveringBoxes(prim, m_user.options, boxes);
             for (const Bounds3& box : boxes) {
                 m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
                 m_user.boxes.push_back(

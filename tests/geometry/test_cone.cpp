@@ -307,7 +307,7 @@ TEST_CASE("cone: covering boxes of a slanted cylinder, hand-computed") {
     // (37%); three slices 16.6, two 20.1: four it is.
     const auto cyl = cone({0, 0, 0}, 0.1, {4, 4, 0}, 0.1);
     std::vector<Bounds3> boxes;
-    cyl->appendCoveringBoxes(0, boxes);
+    cyl->appendCoveringBoxes(0, IntersectOptions{}, boxes);
     REQUIRE(boxes.size() == 4);
     const double e = 0.1 * std::sqrt(0.5);
     Bounds3 whole({-e, -e, -0.1}, {4 + e, 4 + e, 0.1});
@@ -317,6 +317,15 @@ TEST_CASE("cone: covering boxes of a slanted cylinder, hand-computed") {
         checkVec(boxes[i].lo, Vec3{i - e - margin, i - e - margin, -0.1 - margin});
         checkVec(boxes[i].hi, Vec3{i + 1 + e + margin, i + 1 + e + margin, 0.1 + margin});
     }
+    // In float precision the one box: a float hit may stray from the surface
+    // by more than any margin fixed at build time.
+    IntersectOptions inFloat;
+    inFloat.precision = Precision::Float;
+    std::vector<Bounds3> floatBoxes;
+    cyl->appendCoveringBoxes(0, inFloat, floatBoxes);
+    REQUIRE(floatBoxes.size() == 1);
+    CHECK(floatBoxes[0].lo == cyl->bounds(0).lo);
+    CHECK(floatBoxes[0].hi == cyl->bounds(0).hi);
     // The one box a renderer used before: the same box, padded.
     checkVec(cyl->bounds(0).lo, whole.padded().lo, 1e-15);
     checkVec(cyl->bounds(0).hi, whole.padded().hi, 1e-15);
@@ -325,7 +334,7 @@ TEST_CASE("cone: covering boxes of a slanted cylinder, hand-computed") {
     for (const auto& one : {cone({1, 2, 3}, 0.1, {1, 2, 9}, 0.1), cone({0, 0, 0}, 1, {1, 1, 0}, 1),
                             cone({0, 0, 0}, 2, {4, 4, 0}, 0.5, true)}) {
         boxes.clear();
-        one->appendCoveringBoxes(0, boxes);
+        one->appendCoveringBoxes(0, IntersectOptions{}, boxes);
         REQUIRE(boxes.size() == 1);
         CHECK(boxes[0].lo == one->bounds(0).lo);
         CHECK(boxes[0].hi == one->bounds(0).hi);
@@ -346,7 +355,7 @@ TEST_CASE("cone: covering boxes contain every surface point and stay inside the 
         const auto c = cone(base, r0, base + axis, r1, true);
         const auto& solid = static_cast<const Cone&>(*c);
         std::vector<Bounds3> boxes;
-        solid.appendCoveringBoxes(0, boxes);
+        solid.appendCoveringBoxes(0, IntersectOptions{}, boxes);
         REQUIRE(!boxes.empty());
         REQUIRE(boxes.size() <= size_t(Cone::kMaxCoveringBoxes));
         split += boxes.size() > 1;
