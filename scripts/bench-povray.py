@@ -38,8 +38,9 @@ each form of the scene in the same rounds and compares raylab with the fastest
 (per scene); the times of every form are printed below the table.
 
 --raylab-before OTHER times a second raylab binary (e.g. a build of main) in
-the same rounds and prints both with their ratios: a before/after table
-measured under the same load.
+the same rounds, right after or before the first (alternating), and prints both
+with their ratios: a before/after table measured under the same load, with the
+median of each round's own ratio (steadier when the machine's speed drifts).
 
 --images DIR writes DIR/SCENE.png: raylab's picture (left, `--png` of the
 warm-up run) and POV-Ray's (right), box-filtered to 256x256, plus the mean
@@ -269,11 +270,16 @@ def bench(args, scenes, raylab, povray, work):
     # ---- timed, interleaved rounds ----
     runners = ["pov_" + f for f in args.pov_forms] + ["raylab"] + (["before"] if args.raylab_before else [])
     samples = {s: {k: [] for k in runners + [r + "_cpu" for r in runners] + ["stats"]} for s in scenes}
+    # The two raylab binaries run back to back, in either order, as one slot:
+    # the VM's speed drifts within seconds, and a POV-Ray run between them
+    # would put them in different phases.
+    slots = [["pov_" + f] for f in args.pov_forms] + [["raylab"] + (["before"] if args.raylab_before else [])]
     for r in range(args.repeats):
         for i, s in enumerate(scenes):
             # rotate the order of the commands between rounds and scenes
-            k = (r + i) % len(runners)
-            order = runners[k:] + runners[:k]
+            k = (r + i) % len(slots)
+            order = [who for slot in slots[k:] + slots[:k]
+                     for who in (slot if (r + i) % 2 == 0 else slot[::-1])]
             for who in order:
                 if who.startswith("pov_"):
                     wall, cpu = run_timed(pov_cmd(s, who[4:]), log)
@@ -308,6 +314,9 @@ def bench(args, scenes, raylab, povray, work):
         if args.raylab_before:
             rows[-1]["before_s"] = med(d["before"])
             rows[-1]["before_cpu_s"] = med(d["before_cpu"])
+            # Each round's own ratio, the two runs back to back: steadier than
+            # the ratio of the medians when the machine's speed drifts.
+            rows[-1]["round_speedup"] = med([b / a for b, a in zip(d["before"], d["raylab"])])
 
     la, lb = machine["load_before"], machine["load_after"]
     print("machine: %s, %d logical CPUs, %.1f GiB; %s" % (machine["cpu"], machine["logical_cpus"],
@@ -334,12 +343,15 @@ def bench(args, scenes, raylab, povray, work):
         print()
         print("raylab before (%s) and after (%s), same rounds:" % (args.raylab_before, raylab))
         print()
-        print("| scene | before s | after s | after faster by | POV-Ray ÷ before | POV-Ray ÷ after | before CPU s | after CPU s |")
-        print("|---|---:|---:|---:|---:|---:|---:|---:|")
+        print("| scene | before s | after s | after faster by | per round | POV-Ray ÷ before | POV-Ray ÷ after | before CPU s | after CPU s |")
+        print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
         for row in rows:
-            print("| %s | %.3f | %.3f | %.2f× | %.1f× | %.1f× | %.3f | %.3f |" % (
+            print("| %s | %.3f | %.3f | %.2f× | %.2f× | %.1f× | %.1f× | %.3f | %.3f |" % (
                 row["scene"], row["before_s"], row["raylab_s"], row["before_s"] / row["raylab_s"],
-                row["povray_s"] / row["before_s"], row["ratio"], row["before_cpu_s"], row["raylab_cpu_s"]))
+                row["round_speedup"], row["povray_s"] / row["before_s"], row["ratio"],
+                row["before_cpu_s"], row["raylab_cpu_s"]))
+        print()
+        print("per round: the median over rounds of before ÷ after, the two binaries run back to back")
     if several:
         print()
         print("POV-Ray wall s by scene form (medians of the same rounds):")

@@ -5,6 +5,7 @@ class, tests/CMakeLists.txt). Needs neither ../shared nor the network; the
 POV-Ray cases are skipped when povray is not installed (it is optional)."""
 
 import hashlib
+import json
 import math
 import os
 import re
@@ -325,11 +326,16 @@ class WithPovray(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             r = subprocess.run([sys.executable, os.path.join(TOP, "scripts", "bench-povray.py"), "--scenes", "tree",
                                 "--repeats", "1", "--threads", "1", "--raylab", RAYLAB,
+                                "--raylab-before", RAYLAB,
                                 "--images", d, "--json", os.path.join(d, "b.json")],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
             out = r.stdout.decode(errors="replace")
             self.assertEqual(r.returncode, 0, out)
             self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| \*\*[0-9.]+×\*\*")
+            # the before/after table, with each round's own ratio
+            self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| [0-9.]+× \| [0-9.]+× \|")
+            with open(os.path.join(d, "b.json")) as fh:
+                self.assertGreater(json.load(fh)["scenes"][0]["round_speedup"], 0)
             self.assertTrue(os.path.isfile(os.path.join(d, "tree.png")))
             self.assertEqual(png_compare.read_png(os.path.join(d, "tree.png"))[:2], (516, 256))
 
