@@ -97,11 +97,12 @@ void checkMemoryBudget(const Scene& scene, const RenderOptions& options) {
 
 void checkMemoryBudget(const Scene& scene, const RenderOptions& options,
                        const std::optional<MemoryLimit>& limit) {
+    if (!limit) return;  // nothing known: no need to walk the scene's primitives
     const size_t primitives = scene.primitiveCount();
     const MemoryEstimate e =
         estimateRenderMemory(options.width, options.height,
                              acceleratorEntries(scene, options.accelOptions.intersect));
-    if (!limit || e.total() <= limit->bytes) return;
+    if (e.total() <= limit->bytes) return;
     const std::string image =
         "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image";
     const std::string what =
