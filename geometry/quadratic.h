@@ -86,14 +86,11 @@ T twoSum(T a, T b, T& err) {
     return s;
 }
 
-/// (x+lx)² + (y+ly)² + (z+lz)² - r² evaluated as if in twice the working
-/// precision and then rounded (Ogita-Rump-Oishi Dot2). (x, lx) etc. are
-/// double-word values, e.g. the exact difference of two points from twoSum;
-/// pass 0 for the low parts of exact inputs. The lo² terms are below the
-/// result's resolution and dropped. Used where the difference cancels
-/// catastrophically: a ray origin very close to a large sphere.
+namespace detail {
+/// The body of sumSquaresMinusSquare, inlined into each variant so that the
+/// fused multiply-adds compile for that variant's target.
 template <class T>
-T sumSquaresMinusSquare(T x, T y, T z, T lx, T ly, T lz, T r) {
+[[gnu::always_inline]] inline T sumSquaresMinusSquareBody(T x, T y, T z, T lx, T ly, T lz, T r) {
     T ex, ey, ez, er, e1, e2, e3;
     const T px = twoProduct(x, x, ex);
     const T py = twoProduct(y, y, ey);
@@ -106,5 +103,36 @@ T sumSquaresMinusSquare(T x, T y, T z, T lx, T ly, T lz, T r) {
     const T cross = T(2) * ((x * lx + y * ly) + z * lz);
     return s + ((((ex + ey) + (ez - er)) + ((e1 + e2) + e3)) + cross);
 }
+
+/// The double variants behind sumSquaresMinusSquare<double> (geometry/quadratic.cpp),
+/// public for the test that they agree bit for bit.
+double sumSquaresMinusSquarePortable(double x, double y, double z, double lx, double ly,
+                                     double lz, double r);
+/// Compiled for FMA hardware; call only when fmaHardware() is true.
+double sumSquaresMinusSquareFma(double x, double y, double z, double lx, double ly, double lz,
+                                double r);
+/// Whether this CPU has fused multiply-add instructions (x86 FMA3; always
+/// false elsewhere, where the portable variant is used).
+bool fmaHardware();
+}  // namespace detail
+
+/// (x+lx)² + (y+ly)² + (z+lz)² - r² evaluated as if in twice the working
+/// precision and then rounded (Ogita-Rump-Oishi Dot2). (x, lx) etc. are
+/// double-word values, e.g. the exact difference of two points from twoSum;
+/// pass 0 for the low parts of exact inputs. The lo² terms are below the
+/// result's resolution and dropped. Used where the difference cancels
+/// catastrophically: a ray origin very close to a large sphere.
+template <class T>
+T sumSquaresMinusSquare(T x, T y, T z, T lx, T ly, T lz, T r) {
+    return detail::sumSquaresMinusSquareBody(x, y, z, lx, ly, lz, r);
+}
+
+/// In double, the variant for the CPU it runs on: without -mfma (Debian's
+/// x86-64 baseline) every std::fma is a call into libm, four per evaluation,
+/// and this sits on the path of every ray leaving a sphere. std::fma is
+/// exactly rounded whoever computes it, so both variants give the same bits.
+template <>
+double sumSquaresMinusSquare<double>(double x, double y, double z, double lx, double ly, double lz,
+                                     double r);
 
 }  // namespace raylab

@@ -3,9 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "geometry/quadratic.h"
+#include "geometry/random.h"
 
 using namespace raylab;
 
@@ -72,4 +75,63 @@ TEST_CASE("quadratic: error-free transformations") {
     const double hi = twoSum(1e4, 0.1, lo);
     CHECK(sumSquaresMinusSquare(hi, 0.0, 0.0, lo, 0.0, 0.0, 1e4) ==
           doctest::Approx(2000.01).epsilon(1e-15));
+}
+
+namespace {
+uint64_t bitsOf(double x) {
+    uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+}  // namespace
+
+TEST_CASE("quadratic: sumSquaresMinusSquare's FMA and portable variants give the same bits") {
+    // The FMA variant is what spheres use on FMA hardware; without it there is
+    // nothing to compare (both names then run the portable code).
+    if (!detail::fmaHardware()) {
+        MESSAGE("no FMA hardware: only the portable variant runs here");
+        return;
+    }
+    SplitMix64 rng(7);
+    // Random magnitudes over the whole exponent range, where the products'
+    // rounding errors are exact (no underflow of the error terms) and also
+    // where they underflow or the sum overflows: std::fma is exactly rounded
+    // in every case, so the bits must match everywhere.
+    const auto value = [&]() {
+        const double m = rng.uniform(1, 2) * (rng.next() % 2 ? 1 : -1);
+        const int e = int(rng.next() % 2100) - 1075;
+        return std::ldexp(m, e);
+    };
+    long differ = 0, finite = 0;
+    for (int i = 0; i < 200000; ++i) {
+        double a[7];
+        if (i % 2) {
+            for (double& x : a) x = value();
+        } else {
+            // A ray origin just off a sphere (the case the function exists for).
+            const double r = std::ldexp(rng.uniform(1, 2), int(rng.next() % 40) - 20);
+            const double d = r * rng.uniform(-1, 1);
+            double hi[3] = {d, r * rng.uniform(-1, 1), 0};
+            hi[2] = std::sqrt(std::max(0.0, r * r - hi[0] * hi[0] - hi[1] * hi[1]));
+            for (int k = 0; k < 3; ++k) {
+                a[k] = hi[k];
+                a[3 + k] = hi[k] * 0x1p-60 * rng.uniform(-1, 1);
+            }
+            a[6] = r;
+        }
+        const double p = detail::sumSquaresMinusSquarePortable(a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
+        const double f = detail::sumSquaresMinusSquareFma(a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
+        const double used = sumSquaresMinusSquare(a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
+        finite += std::isfinite(p);
+        // NaN results compare by being NaN, everything else by its bits.
+        differ += !(std::isnan(p) && std::isnan(f)) && bitsOf(p) != bitsOf(f);
+        differ += !(std::isnan(p) && std::isnan(used)) && bitsOf(p) != bitsOf(used);
+    }
+    CHECK(differ == 0);
+    CHECK(finite > 100000);
+    // Hand-picked: exact squares, an error term at the subnormal boundary, signed zeros.
+    for (const double x : {3.0, 0x1.0000001p-511, 0x1p-537, -0.0, 1e300, 0x1.fffffffffffffp+511}) {
+        CHECK(bitsOf(detail::sumSquaresMinusSquareFma(x, x, 0.0, 0.0, 0.0, 0.0, x)) ==
+              bitsOf(detail::sumSquaresMinusSquarePortable(x, x, 0.0, 0.0, 0.0, 0.0, x)));
+    }
 }
