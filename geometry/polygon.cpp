@@ -30,6 +30,18 @@ constexpr size_t kGridMinVertices = 12;
 /// 16, 32 and 64 per vertex: render 293, 275, 263 M instructions (128x128), grid
 /// building 33, 48, 75 M; at 512x512 64 costs least.
 constexpr int kGridCellsPerVertex = 64;
+/// From this many vertices on, the watertight test finds the crossing edges
+/// from bit masks; below it the plain loop is cheaper (measured on SPD balls'
+/// floor quad: 110 instructions per test, 150 through masks).
+constexpr size_t kMaskMinVertices = 16;
+/// Vertices per chunk whose box can decide a whole byte of such a mask.
+constexpr size_t kChunk = 8;
+/// Chunk boxes are kept only while every coordinate, and the ray origins they
+/// are used with, stay below this magnitude (double; 2^100 for float): then
+/// the sheared y of a vertex, (Y - oy) - sy·(Z - oz) with |sy| <= 1, never
+/// overflows, so no NaN can appear and rounding keeps its monotonicity.
+constexpr double kChunkCoordLimit = 0x1p1000;
+constexpr float kChunkCoordLimitF = 0x1p100f;
 
 /// Exact sign of ax·by - ay·bx. The rounded value decides when it clears its
 /// error bound; otherwise the difference of the two exact products (each a
@@ -107,6 +119,28 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
             m_coords[k].push_back(v[k]);
             m_coordsF[k].push_back(static_cast<float>(v[k]));
         }
+    }
+    // Chunk boxes for the watertight test's masks (see aboveBits).
+    const size_t n = m_vertices.size();
+    if (n >= kMaskMinVertices) {
+        const auto build = [&](const auto& coords, auto& lo, auto& hi, auto limit) {
+            for (int k = 0; k < 3; ++k) {
+                for (size_t c = 0; c < n; c += kChunk) {
+                    const auto first = coords[k].begin() + std::ptrdiff_t(c);
+                    const auto last = coords[k].begin() + std::ptrdiff_t(std::min(n, c + kChunk));
+                    const auto [mn, mx] = std::minmax_element(first, last);
+                    if (!(std::abs(*mn) <= limit && std::abs(*mx) <= limit)) {
+                        lo = {};  // too large: every mask is computed vertex by vertex
+                        hi = {};
+                        return;
+                    }
+                    lo[k].push_back(*mn);
+                    hi[k].push_back(*mx);
+                }
+            }
+        };
+        build(m_coords, m_chunkLo, m_chunkHi, kChunkCoordLimit);
+        build(m_coordsF, m_chunkLoF, m_chunkHiF, kChunkCoordLimitF);
     }
     // The bounding rectangle in the (u, v) axes.
     Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -270,11 +304,6 @@ bool Polygon::insideProjected(const Vec3T<T>& p) const {
 
 namespace {
 
-/// From this many vertices on, the watertight test finds the crossing edges
-/// from bit masks; below it the plain loop is cheaper (measured on SPD balls'
-/// floor quad: 110 instructions per test, 150 through masks).
-constexpr size_t kMaskMinVertices = 16;
-
 /// Bit i: whether vertex i's sheared y, (Y[i] - oy) - sy·(Z[i] - oz), is
 /// > 0, for i < n <= 64 (insideWatertight's y; NaN is not > 0). Several
 /// vertices per instruction where SSE2 is there: SIMD lanes round each
@@ -305,6 +334,58 @@ uint64_t aboveMask(const T* Y, const T* Z, size_t n, T oy, T oz, T sy) {
 }
 
 }  // namespace
+
+template <class T>
+bool Polygon::chunkBoxesUsable(T oa, T ob, T oz, T sa, T sb) const {
+    const T limit = T(std::is_same_v<T, double> ? kChunkCoordLimit : kChunkCoordLimitF);
+    const bool built = std::is_same_v<T, double> ? !m_chunkLo[0].empty() : !m_chunkLoF[0].empty();
+    // NaN fails every comparison, so it falls back to the vertex-by-vertex path.
+    return built && std::abs(oa) <= limit && std::abs(ob) <= limit && std::abs(oz) <= limit &&
+           std::abs(sa) <= T(1) && std::abs(sb) <= T(1);
+}
+
+template <class T>
+void Polygon::chunkRange(size_t c, int ka, int kz, T oa, T oz, T sa, T& low, T& high) const {
+    const std::array<std::vector<T>, 3>* lo;
+    const std::array<std::vector<T>, 3>* hi;
+    if constexpr (std::is_same_v<T, double>) {
+        lo = &m_chunkLo, hi = &m_chunkHi;
+    } else {
+        lo = &m_chunkLoF, hi = &m_chunkHiF;
+    }
+    // The sheared coordinate (A - oa) - sa·(Z - oz), computed in rounded
+    // arithmetic, is monotone in each input: rounding never reverses an order,
+    // so it grows with A and, as sa·(Z - oz) is subtracted, falls with Z when
+    // sa >= 0 and grows with it when sa < 0. Evaluated the same way at the
+    // chunk box's corners, it bounds exactly what every vertex of the chunk
+    // gets (chunkBoxesUsable rules out overflow and NaN, which could break it).
+    const bool rising = sa >= T(0);
+    low = ((*lo)[ka][c] - oa) - sa * ((rising ? (*hi)[kz][c] : (*lo)[kz][c]) - oz);
+    high = ((*hi)[ka][c] - oa) - sa * ((rising ? (*lo)[kz][c] : (*hi)[kz][c]) - oz);
+}
+
+template <class T>
+uint64_t Polygon::aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T oy, T oz,
+                            T sy) const {
+    const T* Y = coords<T>(ky) + base;
+    const T* Z = coords<T>(kz) + base;
+    if (!boxes) return aboveMask(Y, Z, m, oy, oz, sy);
+    // A chunk whose lowest y is > 0 lies wholly above, one whose highest is
+    // <= 0 wholly below: only those the x axis passes near are computed vertex
+    // by vertex.
+    uint64_t mask = 0;
+    for (size_t k = 0; k < m; k += kChunk) {
+        const size_t len = std::min(kChunk, m - k);
+        T low, high;
+        chunkRange((base + k) / kChunk, ky, kz, oy, oz, sy, low, high);
+        if (low > T(0)) {
+            mask |= ((uint64_t(1) << len) - 1) << k;
+        } else if (high > T(0)) {
+            mask |= aboveMask(Y + k, Z + k, len, oy, oz, sy) << k;
+        }
+    }
+    return mask;
+}
 
 template <class T>
 bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
@@ -361,16 +442,39 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
     // Many vertices, few crossing edges (a 144-gon of SPD gears has a
     // handful): the sides of 64 vertices at a time make a bit mask, whose
     // changes from bit to bit are those edges.
+    // Chunk boxes decide whole bytes of the mask, and crossing edges whose
+    // two ends lie in chunks wholly left or right of the ray.
+    const bool boxes = chunkBoxesUsable(ox, oy, oz, sx, sy);
+    // +1: every vertex of chunk c has sheared x > 0; -1: every one has x < 0.
+    const auto xSide = [&](size_t c) {
+        T low, high;
+        chunkRange(c, kx, kz, ox, oz, sx, low, high);
+        return low > T(0) ? 1 : high < T(0) ? -1 : 0;
+    };
     uint64_t previous = aboveMask(Y + (n - 1), Z + (n - 1), 1, oy, oz, sy);  // the first edge's start
     for (size_t base = 0; base < n; base += 64) {
         const size_t m = std::min<size_t>(64, n - base);
-        const uint64_t above = aboveMask(Y + base, Z + base, m, oy, oz, sy);
+        const uint64_t above = aboveBits(base, m, boxes, ky, kz, oy, oz, sy);
         uint64_t changes = above ^ ((above << 1) | previous);
         if (m < 64) changes &= (uint64_t(1) << m) - 1;
         for (; changes != 0; changes &= changes - 1) {
-            const size_t b = base + size_t(__builtin_ctzll(changes));
+            const size_t bit = size_t(__builtin_ctzll(changes));
+            const size_t b = base + bit, a = b == 0 ? n - 1 : b - 1;
+            if (boxes) {
+                // An edge that crosses the x axis with both ends at x < 0 meets
+                // it at x < 0: its exact sign is -1 (lx·uy < 0, -ly·ux <= 0).
+                // With both ends at x > 0 the sign is +1 by the same argument.
+                const int side = xSide(b / kChunk);
+                if (side != 0 && (a / kChunk == b / kChunk || xSide(a / kChunk) == side)) {
+                    if (side > 0) {
+                        winding += (above >> bit) & 1 ? 1 : -1;
+                        ++crossings;
+                    }
+                    continue;
+                }
+            }
             T ax, ay, bx, by;
-            shear(b == 0 ? n - 1 : b - 1, ax, ay);
+            shear(a, ax, ay);
             shear(b, bx, by);
             crossingEdge(ax, ay, bx, by);
         }

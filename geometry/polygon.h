@@ -28,9 +28,14 @@
 //   vertices on, which side of the x axis each vertex lies on is computed 64
 //   at a time as a bit mask (SIMD, the same roundings) and only the edges
 //   where it changes are evaluated: the same answer with a fraction of the work
-//   (tests/geometry/test_polygon_watertight.cpp).
+//   (tests/geometry/test_polygon_watertight.cpp). Boxes of 8 consecutive
+//   vertices settle whole bytes of the mask, and crossing edges wholly left or
+//   right of the ray, without touching their vertices: rounded arithmetic is
+//   monotone, so the sheared coordinates computed at a box's corners bound
+//   those of every vertex in it exactly.
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -113,10 +118,29 @@ private:
     /// arrays: the inside tests pick axes at run time without branching per vertex).
     template <class T>
     const T* coords(int axis) const;
+    /// Bit i of the result: whether vertex base + i (i < m) lies above the
+    /// sheared x axis, as insideWatertight computes it; with `boxes`, whole
+    /// chunks of vertices are decided from their boxes where the box does.
+    template <class T>
+    uint64_t aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T oy, T oz, T sy) const;
+    /// Whether chunk boxes exist and may bound sheared coordinates for a ray
+    /// with origin components oa, ob, oz and shears sa, sb (no overflow, no NaN).
+    template <class T>
+    bool chunkBoxesUsable(T oa, T ob, T oz, T sa, T sb) const;
+    /// The lowest and highest sheared coordinate (A - oa) - sa·(Z - oz) that
+    /// any vertex of chunk c gets, A and Z being axes ka and kz, computed as
+    /// insideWatertight computes it (exact bounds; see polygon.cpp).
+    template <class T>
+    void chunkRange(size_t c, int ka, int kz, T oa, T oz, T sa, T& low, T& high) const;
 
     std::vector<Vec3> m_vertices;
     std::array<std::vector<double>, 3> m_coords;  ///< x, y, z of the vertices
     std::array<std::vector<float>, 3> m_coordsF;  ///< the same, rounded to float
+    /// Per chunk of 8 consecutive vertices (polygons with many vertices
+    /// only): the lowest and highest coordinate on each axis, in double and
+    /// rounded to float (rounding is monotone: the float vertices' bounds).
+    std::array<std::vector<double>, 3> m_chunkLo, m_chunkHi;
+    std::array<std::vector<float>, 3> m_chunkLoF, m_chunkHiF;
     std::vector<Vec3> m_normals;                  ///< unit per-vertex shading normals, or empty
     Frame m_frame;                                ///< n = unit Newell normal
     Vec3 m_centroid;                              ///< vertex mean: the plane's reference point
