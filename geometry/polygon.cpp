@@ -336,12 +336,11 @@ uint64_t aboveMask(const T* Y, const T* Z, size_t n, T oy, T oz, T sy) {
 }  // namespace
 
 template <class T>
-bool Polygon::chunkBoxesUsable(T oa, T ob, T oz, T sa, T sb) const {
+bool Polygon::chunkBoxesUsable(T oy, T oz, T sy) const {
     const T limit = T(std::is_same_v<T, double> ? kChunkCoordLimit : kChunkCoordLimitF);
     const bool built = std::is_same_v<T, double> ? !m_chunkLo[0].empty() : !m_chunkLoF[0].empty();
     // NaN fails every comparison, so it falls back to the vertex-by-vertex path.
-    return built && std::abs(oa) <= limit && std::abs(ob) <= limit && std::abs(oz) <= limit &&
-           std::abs(sa) <= T(1) && std::abs(sb) <= T(1);
+    return built && std::abs(oy) <= limit && std::abs(oz) <= limit && std::abs(sy) <= T(1);
 }
 
 template <class T>
@@ -388,7 +387,7 @@ uint64_t Polygon::aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T
 }
 
 template <class T>
-bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
+bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d, bool chunkBoxes) const {
     // Ray space: z = dominant |d| axis, shear so the ray is the +z axis through the origin.
     const int kz = dominantAxis(d);
     const int kx = (kz + 1) % 3;
@@ -442,15 +441,8 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
     // Many vertices, few crossing edges (a 144-gon of SPD gears has a
     // handful): the sides of 64 vertices at a time make a bit mask, whose
     // changes from bit to bit are those edges.
-    // Chunk boxes decide whole bytes of the mask, and crossing edges whose
-    // two ends lie in chunks wholly left or right of the ray.
-    const bool boxes = chunkBoxesUsable(ox, oy, oz, sx, sy);
-    // +1: every vertex of chunk c has sheared x > 0; -1: every one has x < 0.
-    const auto xSide = [&](size_t c) {
-        T low, high;
-        chunkRange(c, kx, kz, ox, oz, sx, low, high);
-        return low > T(0) ? 1 : high < T(0) ? -1 : 0;
-    };
+    // Boxes of 8 vertices settle whole bytes of the mask (aboveBits).
+    const bool boxes = chunkBoxes && chunkBoxesUsable(oy, oz, sy);
     uint64_t previous = aboveMask(Y + (n - 1), Z + (n - 1), 1, oy, oz, sy);  // the first edge's start
     for (size_t base = 0; base < n; base += 64) {
         const size_t m = std::min<size_t>(64, n - base);
@@ -458,21 +450,7 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const {
         uint64_t changes = above ^ ((above << 1) | previous);
         if (m < 64) changes &= (uint64_t(1) << m) - 1;
         for (; changes != 0; changes &= changes - 1) {
-            const size_t bit = size_t(__builtin_ctzll(changes));
-            const size_t b = base + bit, a = b == 0 ? n - 1 : b - 1;
-            if (boxes) {
-                // An edge that crosses the x axis with both ends at x < 0 meets
-                // it at x < 0: its exact sign is -1 (lx·uy < 0, -ly·ux <= 0).
-                // With both ends at x > 0 the sign is +1 by the same argument.
-                const int side = xSide(b / kChunk);
-                if (side != 0 && (a / kChunk == b / kChunk || xSide(a / kChunk) == side)) {
-                    if (side > 0) {
-                        winding += (above >> bit) & 1 ? 1 : -1;
-                        ++crossings;
-                    }
-                    continue;
-                }
-            }
+            const size_t b = base + size_t(__builtin_ctzll(changes)), a = b == 0 ? n - 1 : b - 1;
             T ax, ay, bx, by;
             shear(a, ax, ay);
             shear(b, bx, by);
@@ -529,7 +507,7 @@ std::optional<ShapeHit> Polygon::intersectT(const Ray& ray, double tMin, double 
         const int byGrid = std::is_same_v<T, double> && m_grid && opt.polygonGrid
                                ? insideByGrid(ray, td, double(cosine), local)
                                : -1;
-        inside = byGrid >= 0 ? byGrid == 1 : insideWatertight(o, d);
+        inside = byGrid >= 0 ? byGrid == 1 : insideWatertight(o, d, opt.polygonChunkBoxes);
     } else {
         inside = insideProjected(o + d * t);
     }

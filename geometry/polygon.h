@@ -29,10 +29,9 @@
 //   at a time as a bit mask (SIMD, the same roundings) and only the edges
 //   where it changes are evaluated: the same answer with a fraction of the work
 //   (tests/geometry/test_polygon_watertight.cpp). Boxes of 8 consecutive
-//   vertices settle whole bytes of the mask, and crossing edges wholly left or
-//   right of the ray, without touching their vertices: rounded arithmetic is
-//   monotone, so the sheared coordinates computed at a box's corners bound
-//   those of every vertex in it exactly.
+//   vertices settle whole bytes of the mask without touching their vertices:
+//   rounded arithmetic is monotone, so the sheared y computed at a box's
+//   corners bounds that of every vertex in it exactly.
 
 #include <array>
 #include <cstdint>
@@ -104,8 +103,10 @@ public:
 private:
     template <class T>
     bool insideProjected(const Vec3T<T>& p) const;
+    /// \param chunkBoxes whether boxes of 8 vertices may settle the mask's
+    ///   bytes (IntersectOptions::polygonChunkBoxes; the same answer either way)
     template <class T>
-    bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d) const;
+    bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d, bool chunkBoxes) const;
     /// The grid's answer for the plane hit o + t·d (cosine = n·d), or -1 when
     /// it cannot be trusted to equal the watertight test's (see polygon.cpp).
     int insideByGrid(const Ray& ray, double t, double cosine, const Vec3& local) const;
@@ -123,10 +124,10 @@ private:
     /// chunks of vertices are decided from their boxes where the box does.
     template <class T>
     uint64_t aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T oy, T oz, T sy) const;
-    /// Whether chunk boxes exist and may bound sheared coordinates for a ray
-    /// with origin components oa, ob, oz and shears sa, sb (no overflow, no NaN).
+    /// Whether chunk boxes exist and may bound the sheared y of a ray with
+    /// origin components oy, oz and shear sy (no overflow, no NaN).
     template <class T>
-    bool chunkBoxesUsable(T oa, T ob, T oz, T sa, T sb) const;
+    bool chunkBoxesUsable(T oy, T oz, T sy) const;
     /// The lowest and highest sheared coordinate (A - oa) - sa·(Z - oz) that
     /// any vertex of chunk c gets, A and Z being axes ka and kz, computed as
     /// insideWatertight computes it (exact bounds; see polygon.cpp).

@@ -91,6 +91,12 @@ namespace detail {
 /// fused multiply-adds compile for that variant's target.
 template <class T>
 [[gnu::always_inline]] inline T sumSquaresMinusSquareBody(T x, T y, T z, T lx, T ly, T lz, T r) {
+    // The variants agree bit for bit only while no a·b + c is fused behind the
+    // source's back: the build says so for every file (-ffp-contract=off,
+    // CMakeLists.txt); clang, whose default fuses, also hears it here.
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
     T ex, ey, ez, er, e1, e2, e3;
     const T px = twoProduct(x, x, ex);
     const T py = twoProduct(y, y, ey);

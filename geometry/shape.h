@@ -48,6 +48,10 @@ struct IntersectOptions {
     /// gives exactly the watertight test's answer (geometry/polygon_grid.h);
     /// off only to compare the two (tests, `raylab bench primitives`).
     bool polygonGrid = true;
+    /// Polygons with many vertices settle whole bytes of the watertight test's
+    /// bit mask from boxes of 8 vertices, exactly as vertex by vertex
+    /// (geometry/polygon.h); off only to compare the two (tests).
+    bool polygonChunkBoxes = true;
 };
 
 /// Minimal record of a candidate hit.

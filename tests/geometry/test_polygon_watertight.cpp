@@ -13,7 +13,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "geometry/polygon.h"
@@ -191,5 +194,128 @@ TEST_CASE("polygon watertight test: bit masks of 64 vertices give the textbook l
             CHECK(floats.inside > floats.rays / 5);
             CHECK(doubles.inside < doubles.rays * 4 / 5);
         }
+    }
+}
+
+namespace {
+
+/// Whether two intersect() answers are the same bit for bit (hit or miss, t, u, v).
+bool sameAnswer(const std::optional<ShapeHit>& a, const std::optional<ShapeHit>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    if (!a) return true;
+    const auto bits = [](double x) {
+        uint64_t u;
+        std::memcpy(&u, &x, sizeof u);
+        return u;
+    };
+    return bits(a->t) == bits(b->t) && bits(a->u) == bits(b->u) && bits(a->v) == bits(b->v);
+}
+
+/// n vertices of a gear-like outline (teeth of 4 vertices), radius `scale`.
+std::vector<Vec3> gearPolygon(size_t n, double scale, const Vec3& centre, const Frame& f) {
+    std::vector<Vec3> v;
+    for (size_t i = 0; i < n; ++i) {
+        const double a = 2 * kPi * double(i) / double(n);
+        const double r = scale * ((i / 2) % 2 ? 1.0 : 0.8);
+        v.push_back(centre + (f.t * std::cos(a) + f.b * std::sin(a)) * r);
+    }
+    return v;
+}
+
+}  // namespace
+
+// The chunk boxes only skip computing vertices whose side of the x axis their
+// box already decides; every answer must stay the vertex-by-vertex one bit for
+// bit, also where the watertight test's own arithmetic underflows or
+// overflows (tiny and huge polygons, subnormal direction components: a review
+// found an earlier version that also skipped crossing edges changing answers
+// there).
+TEST_CASE("polygon watertight test: chunk boxes give the vertex-by-vertex answers at every scale") {
+    SplitMix64 rng(99);
+    const std::vector<size_t> sizes{16, 17, 24, 63, 64, 65, 144, 200};
+    // From polygons whose area is barely a normal double to ones whose area
+    // barely fits (Polygon::create needs it for the normal); float chunk boxes
+    // stop at 2^100 (about 1.27e30).
+    const std::vector<double> scales{1e-140, 1e-40, 1e-25, 1e-3, 1, 1e15, 1e20, 1e25, 1e30, 1e31, 1e150};
+    const std::vector<Vec3> normals{{0, 0, 1}, {0, 1, 0}, {0.3, -0.5, 0.8}, {-0.9, 0.2, 0.1}};
+    long rays = 0, differ = 0, hits = 0;
+    for (const FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+        for (size_t n : sizes) {
+            for (double scale : scales) {
+                for (size_t k = 0; k < normals.size(); ++k) {
+                    const Frame f = Frame::fromNormal(normalize(normals[k]));
+                    const Vec3 centre = k % 2 ? Vec3{} : Vec3{3 * scale, -scale, 0.5 * scale};
+                    PolygonParams p;
+                    if ((n + k) % 3 == 0) {  // unit-sized around the origin, then scaled
+                        p.vertices = randomPolygon(rng, n, Vec3{}, normals[k], (n + k) % 2 == 0);
+                        for (Vec3& v : p.vertices) v = centre + v * scale;
+                    } else {
+                        p.vertices = gearPolygon(n, scale, centre, f);
+                    }
+                    p.rule = rule;
+                    p.test = PolygonTest::Watertight;
+                    const std::unique_ptr<Polygon> poly = Polygon::create(p);
+                    poly->setSidedness(Sidedness::Both);
+                    const std::vector<Vec3>& v = poly->vertices();
+                    for (int i = 0; i < 60; ++i) {
+                        Vec3 target;
+                        switch (i % 5) {
+                            case 0: target = v[rng.next() % v.size()]; break;
+                            case 1: {
+                                const size_t j = rng.next() % v.size();
+                                target = v[j] + (v[(j + 1) % v.size()] - v[j]) * rng.uniform();
+                                break;
+                            }
+                            case 2: target = centre; break;
+                            case 3: {  // just beside a vertex
+                                const Vec3 w = v[rng.next() % v.size()];
+                                target = w + (w - centre) * std::ldexp(1.0, -int(rng.next() % 46));
+                                break;
+                            }
+                            default: target = centre + (f.t * rng.uniform(-1.2, 1.2) +
+                                                        f.b * rng.uniform(-1.2, 1.2)) * scale;
+                        }
+                        Vec3 dir = i % 3 == 0 ? -f.n : normalize(rng.direction() - f.n * 2.0);
+                        if (i % 4 == 1) dir.x = (rng.next() % 2 ? 1 : -1) * 0x1p-1074;  // subnormal
+                        if (i % 4 == 2) dir.y = -0.0;
+                        const Ray ray{target - dir * scale * rng.uniform(0.5, 3), dir};
+                        for (const Precision precision : {Precision::Double, Precision::Float}) {
+                            IntersectOptions with, without;
+                            with.precision = without.precision = precision;
+                            with.polygonGrid = without.polygonGrid = false;
+                            without.polygonChunkBoxes = false;
+                            const auto a = poly->intersect(0, ray, 0, kInf, with);
+                            const auto b = poly->intersect(0, ray, 0, kInf, without);
+                            ++rays;
+                            hits += b.has_value();
+                            differ += !sameAnswer(a, b);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    CAPTURE(rays);
+    CHECK(differ == 0);
+    CHECK(hits > rays / 5);  // not all misses
+    // The review's first case: a 16-vertex unit square and a direction with a
+    // subnormal component, through the wrap-around edge's corner.
+    PolygonParams square;
+    for (int side = 0; side < 4; ++side)
+        for (int j = 0; j < 4; ++j) {
+            const double s = j / 4.0;
+            const double xy[4][2] = {{s, 0}, {1, s}, {1 - s, 1}, {0, 1 - s}};
+            square.vertices.push_back({xy[side][0], xy[side][1], 0});
+        }
+    square.test = PolygonTest::Watertight;
+    const std::unique_ptr<Polygon> poly = Polygon::create(square);
+    poly->setSidedness(Sidedness::Both);
+    for (const Precision precision : {Precision::Double, Precision::Float}) {
+        const double tiny = precision == Precision::Double ? 0x1p-1074 : 0x1p-149;
+        IntersectOptions with, without;
+        with.precision = without.precision = precision;
+        without.polygonChunkBoxes = false;
+        const Ray ray{{0, 0, 1}, {-tiny, 0, -1}};
+        CHECK(sameAnswer(poly->intersect(0, ray, 0, kInf, with), poly->intersect(0, ray, 0, kInf, without)));
     }
 }

@@ -123,7 +123,8 @@ TEST_CASE("quadratic: sumSquaresMinusSquare's FMA and portable variants give the
         const double f = detail::sumSquaresMinusSquareFma(a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
         const double used = sumSquaresMinusSquare(a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
         finite += std::isfinite(p);
-        // NaN results compare by being NaN, everything else by its bits.
+        // NaN results compare by being NaN (their payloads may differ, and a
+        // NaN c gives the sphere no hit either way), everything else by its bits.
         differ += !(std::isnan(p) && std::isnan(f)) && bitsOf(p) != bitsOf(f);
         differ += !(std::isnan(p) && std::isnan(used)) && bitsOf(p) != bitsOf(used);
     }
