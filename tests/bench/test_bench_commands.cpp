@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -91,6 +92,10 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     // Issue 20's bar without --spd (the demo's), named in the report.
     CHECK(doc.find("\"bar\": 0.7,") != std::string::npos);
     CHECK(report.find("of bare Embree (bar: >= 70%)") != std::string::npos);
+    // One run: its own ratio is the run-by-run median, listed once.
+    CHECK(report.find("run by run (each render against its own replays): median ") !=
+          std::string::npos);
+    CHECK(doc.find("\"renderer_fraction_per_run\": {\"median\": ") != std::string::npos);
 
     o.outPath = csv;
     o.threads = 2;
@@ -106,5 +111,22 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     std::ostringstream out3;
     CHECK(runLimitBench(o, out3) == 0);
     CHECK(test::readFile(json).find("\"bar\": 0.8,") != std::string::npos);
+    // Three runs: three ratios, their median among them.
+    o.runs = 3;
+    std::ostringstream out4;
+    CHECK(runLimitBench(o, out4) == 0);
+    const std::string doc3 = test::readFile(json);
+    const size_t at = doc3.find("\"renderer_fraction_per_run\": {\"median\": ");
+    REQUIRE(at != std::string::npos);
+    double median = 0, a = 0, b = 0, c = 0;
+    REQUIRE(std::sscanf(doc3.c_str() + at,
+                        "\"renderer_fraction_per_run\": {\"median\": %lf, \"runs\": [%lf, %lf, %lf]}",
+                        &median, &a, &b, &c) == 4);
+    CHECK(a > 0);
+    CHECK(b > 0);
+    CHECK(c > 0);
+    CHECK((median == a || median == b || median == c));
+    CHECK(median >= std::min({a, b, c}));
+    CHECK(median <= std::max({a, b, c}));
     CHECK(out3.str().find("of bare Embree (bar with --spd: >= 80%)") != std::string::npos);
 }
