@@ -344,7 +344,11 @@ bool Polygon::chunkBoxesUsable(T oy, T oz, T sy) const {
 }
 
 template <class T>
-void Polygon::chunkRange(size_t c, int ka, int kz, T oa, T oz, T sa, T& low, T& high) const {
+uint64_t Polygon::aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T oy, T oz,
+                            T sy) const {
+    const T* Y = coords<T>(ky) + base;
+    const T* Z = coords<T>(kz) + base;
+    if (!boxes) return aboveMask(Y, Z, m, oy, oz, sy);
     const std::array<std::vector<T>, 3>* lo;
     const std::array<std::vector<T>, 3>* hi;
     if constexpr (std::is_same_v<T, double>) {
@@ -352,34 +356,25 @@ void Polygon::chunkRange(size_t c, int ka, int kz, T oa, T oz, T sa, T& low, T& 
     } else {
         lo = &m_chunkLoF, hi = &m_chunkHiF;
     }
-    // The sheared coordinate (A - oa) - sa·(Z - oz), computed in rounded
-    // arithmetic, is monotone in each input: rounding never reverses an order,
-    // so it grows with A and, as sa·(Z - oz) is subtracted, falls with Z when
-    // sa >= 0 and grows with it when sa < 0. Evaluated the same way at the
-    // chunk box's corners, it bounds exactly what every vertex of the chunk
-    // gets (chunkBoxesUsable rules out overflow and NaN, which could break it).
-    const bool rising = sa >= T(0);
-    low = ((*lo)[ka][c] - oa) - sa * ((rising ? (*hi)[kz][c] : (*lo)[kz][c]) - oz);
-    high = ((*hi)[ka][c] - oa) - sa * ((rising ? (*lo)[kz][c] : (*hi)[kz][c]) - oz);
-}
-
-template <class T>
-uint64_t Polygon::aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T oy, T oz,
-                            T sy) const {
-    const T* Y = coords<T>(ky) + base;
-    const T* Z = coords<T>(kz) + base;
-    if (!boxes) return aboveMask(Y, Z, m, oy, oz, sy);
-    // A chunk whose lowest y is > 0 lies wholly above, one whose highest is
-    // <= 0 wholly below: only those the x axis passes near are computed vertex
-    // by vertex.
+    // The sheared y, (Y - oy) - sy·(Z - oz), computed in rounded arithmetic,
+    // is monotone in each input: rounding never reverses an order, so it grows
+    // with Y and, as sy·(Z - oz) is subtracted, falls with Z when sy >= 0 and
+    // grows with it when sy < 0. Evaluated the same way at a chunk box's
+    // corners, it bounds exactly what every vertex of the chunk gets
+    // (chunkBoxesUsable rules out overflow and NaN, which could break it). A
+    // chunk whose lowest y is > 0 lies wholly above, one whose highest is <= 0
+    // wholly below: only those the x axis passes near are computed vertex by
+    // vertex.
+    const std::vector<T>& yLo = (*lo)[ky];
+    const std::vector<T>& yHi = (*hi)[ky];
+    const std::vector<T>& zForLow = sy >= T(0) ? (*hi)[kz] : (*lo)[kz];
+    const std::vector<T>& zForHigh = sy >= T(0) ? (*lo)[kz] : (*hi)[kz];
     uint64_t mask = 0;
     for (size_t k = 0; k < m; k += kChunk) {
-        const size_t len = std::min(kChunk, m - k);
-        T low, high;
-        chunkRange((base + k) / kChunk, ky, kz, oy, oz, sy, low, high);
-        if (low > T(0)) {
+        const size_t c = (base + k) / kChunk, len = std::min(kChunk, m - k);
+        if ((yLo[c] - oy) - sy * (zForLow[c] - oz) > T(0)) {
             mask |= ((uint64_t(1) << len) - 1) << k;
-        } else if (high > T(0)) {
+        } else if ((yHi[c] - oy) - sy * (zForHigh[c] - oz) > T(0)) {
             mask |= aboveMask(Y + k, Z + k, len, oy, oz, sy) << k;
         }
     }

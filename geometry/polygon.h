@@ -128,11 +128,6 @@ private:
     /// origin components oy, oz and shear sy (no overflow, no NaN).
     template <class T>
     bool chunkBoxesUsable(T oy, T oz, T sy) const;
-    /// The lowest and highest sheared coordinate (A - oa) - sa·(Z - oz) that
-    /// any vertex of chunk c gets, A and Z being axes ka and kz, computed as
-    /// insideWatertight computes it (exact bounds; see polygon.cpp).
-    template <class T>
-    void chunkRange(size_t c, int ka, int kz, T oa, T oz, T sa, T& low, T& high) const;
 
     std::vector<Vec3> m_vertices;
     std::array<std::vector<double>, 3> m_coords;  ///< x, y, z of the vertices

@@ -39,8 +39,7 @@ bool fmaHardware() { return false; }
 template <>
 double sumSquaresMinusSquare<double>(double x, double y, double z, double lx, double ly, double lz,
                                      double r) {
-    static const bool fma = detail::fmaHardware();
-    return fma ? detail::sumSquaresMinusSquareFma(x, y, z, lx, ly, lz, r)
+    return detail::fmaHardware() ? detail::sumSquaresMinusSquareFma(x, y, z, lx, ly, lz, r)
                : detail::sumSquaresMinusSquarePortable(x, y, z, lx, ly, lz, r);
 }
 

@@ -13,8 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -22,6 +20,7 @@
 #include "geometry/polygon.h"
 #include "geometry/primitives.h"
 #include "geometry/random.h"
+#include "support/float_bits.h"
 
 using namespace raylab;
 
@@ -203,12 +202,9 @@ namespace {
 bool sameAnswer(const std::optional<ShapeHit>& a, const std::optional<ShapeHit>& b) {
     if (a.has_value() != b.has_value()) return false;
     if (!a) return true;
-    const auto bits = [](double x) {
-        uint64_t u;
-        std::memcpy(&u, &x, sizeof u);
-        return u;
-    };
-    return bits(a->t) == bits(b->t) && bits(a->u) == bits(b->u) && bits(a->v) == bits(b->v);
+    using test::bitsOf;
+    return bitsOf(a->t) == bitsOf(b->t) && bitsOf(a->u) == bitsOf(b->u) &&
+           bitsOf(a->v) == bitsOf(b->v);
 }
 
 /// n vertices of a gear-like outline (teeth of 4 vertices), radius `scale`.

@@ -3,12 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 
 #include "geometry/quadratic.h"
 #include "geometry/random.h"
+#include "support/float_bits.h"
 
 using namespace raylab;
 
@@ -77,14 +76,6 @@ TEST_CASE("quadratic: error-free transformations") {
           doctest::Approx(2000.01).epsilon(1e-15));
 }
 
-namespace {
-uint64_t bitsOf(double x) {
-    uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-}
-}  // namespace
-
 TEST_CASE("quadratic: sumSquaresMinusSquare's FMA and portable variants give the same bits") {
     // The FMA variant is what spheres use on FMA hardware; without it there is
     // nothing to compare (both names then run the portable code).
@@ -125,14 +116,14 @@ TEST_CASE("quadratic: sumSquaresMinusSquare's FMA and portable variants give the
         finite += std::isfinite(p);
         // NaN results compare by being NaN (their payloads may differ, and a
         // NaN c gives the sphere no hit either way), everything else by its bits.
-        differ += !(std::isnan(p) && std::isnan(f)) && bitsOf(p) != bitsOf(f);
-        differ += !(std::isnan(p) && std::isnan(used)) && bitsOf(p) != bitsOf(used);
+        differ += !(std::isnan(p) && std::isnan(f)) && test::bitsOf(p) != test::bitsOf(f);
+        differ += !(std::isnan(p) && std::isnan(used)) && test::bitsOf(p) != test::bitsOf(used);
     }
     CHECK(differ == 0);
     CHECK(finite > 100000);
     // Hand-picked: exact squares, an error term at the subnormal boundary, signed zeros.
     for (const double x : {3.0, 0x1.0000001p-511, 0x1p-537, -0.0, 1e300, 0x1.fffffffffffffp+511}) {
-        CHECK(bitsOf(detail::sumSquaresMinusSquareFma(x, x, 0.0, 0.0, 0.0, 0.0, x)) ==
-              bitsOf(detail::sumSquaresMinusSquarePortable(x, x, 0.0, 0.0, 0.0, 0.0, x)));
+        CHECK(test::bitsOf(detail::sumSquaresMinusSquareFma(x, x, 0.0, 0.0, 0.0, 0.0, x)) ==
+              test::bitsOf(detail::sumSquaresMinusSquarePortable(x, x, 0.0, 0.0, 0.0, 0.0, x)));
     }
 }
