@@ -30,6 +30,16 @@ constexpr size_t kGridMinVertices = 12;
 /// 16, 32 and 64 per vertex: render 293, 275, 263 M instructions (128x128), grid
 /// building 33, 48, 75 M; at 512x512 64 costs least.
 constexpr int kGridCellsPerVertex = 64;
+/// The grid stands in for the watertight test only at scales where that
+/// test's products neither underflow nor overflow (insideByGrid's bound
+/// assumes relative rounding): every edge at least this long (in its largest
+/// component; zero-length edges add an exact 0 and do not count), and the
+/// scale s of each query (centroid, origin, hit) at most kGridMaxScale.
+constexpr double kGridMinEdge = 0x1p-350;
+constexpr double kGridMaxScale = 0x1p350;
+/// Directions shorter than this (largest component) are left to the
+/// watertight test: below it n·d's underflow is not covered by its bound.
+constexpr double kGridMinDirection = 0x1p-900;
 /// From this many vertices on, the watertight test finds the crossing edges
 /// from bit masks; below it the plain loop is cheaper (measured on SPD balls'
 /// floor quad: 110 instructions per test, 150 through masks).
@@ -158,7 +168,14 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
     m_bounds = m_bounds.padded();
 
     for (const Vec3& v : m_vertices) m_radius = std::max(m_radius, length(v - m_centroid));
-    if (m_vertices.size() >= kGridMinVertices) {
+    double shortestEdge = std::numeric_limits<double>::infinity();
+    for (size_t i = 0, n = m_vertices.size(); i < n; ++i) {
+        const double e = maxComponent(abs(m_vertices[(i + 1) % n] - m_vertices[i]));
+        if (e > 0) shortestEdge = std::min(shortestEdge, e);
+    }
+    const bool gridScale = shortestEdge >= kGridMinEdge &&
+                           maxComponent(abs(m_centroid)) + m_radius <= kGridMaxScale;
+    if (m_vertices.size() >= kGridMinVertices && gridScale) {
         std::vector<Vec2> plane;
         plane.reserve(m_vertices.size());
         for (const Vec3& v : m_vertices)
@@ -473,9 +490,17 @@ int Polygon::insideByGrid(const Ray& ray, double t, double cosine, const Vec3& l
     // So the answers agree when (46u·S + 4·deviation)/cos < clearance; the
     // test below uses 256u, bounds Euclidean norms by twice the largest
     // component, and lowers |n·d| by its own rounding error. NaN fails it.
+    //
+    // All of this assumes relative rounding. The watertight test's sign
+    // products are about S² and its crossing determinants, where the grid
+    // answers, at least (shortest edge)·clearance·cos², so with every edge
+    // >= 2^-350 (the grid is built only then) and S <= 2^350 none of them
+    // underflows or overflows; |d| >= 2^-900 keeps n·d's underflow (2^-1074)
+    // below its allowance. Beyond that the watertight test answers alone.
     const double dMax = maxComponent(abs(ray.d));
     const double s = 2 * (maxComponent(abs(ray.o)) + maxComponent(abs(m_centroid)) +
                           std::abs(t) * dMax) + m_radius;
+    if (!(s <= kGridMaxScale && dMax >= kGridMinDirection)) return -1;
     const double error = (256 * 0x1p-53 * s + 4 * m_deviation) * 2 * dMax;
     const double cosineLow = std::abs(cosine) - 16 * 0x1p-53 * dMax;
     if (!(error < m_grid->clearance() * cosineLow)) return -1;
