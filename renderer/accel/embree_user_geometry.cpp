@@ -33,15 +33,25 @@ Ray laneRay(RTCRayN* rays, unsigned n, unsigned i, const Vec3& origin) {
     return Ray{o + origin, d};
 }
 
-/// The first hit on the entry in (tMin, tMax) that the filter does not cut out.
-std::optional<ShapeHit> firstKeptHit(const EmbreeUserTable::Entry& e, const Ray& ray, double tMin,
-                                     double tMax, const IntersectOptions& opt,
-                                     const SurfaceFilter* filter) {
-    std::optional<ShapeHit> h = e.shape->intersect(e.prim, ray, tMin, tMax, opt);
-    if (!e.cutsOut || !filter) return h;  // cutOut() is false for every other entry
-    while (h && filter->cutOut(ray, Hit{h->t, e.object, e.prim, h->u, h->v}))
+/// The first of the entry's hits from `h` on (in (tMin, tMax)) that the
+/// filter does not cut out. Out of line: only cut-outs need it.
+[[gnu::noinline]] std::optional<ShapeHit> firstUncut(const EmbreeUserTable::Entry& e,
+                                                     std::optional<ShapeHit> h, const Ray& ray,
+                                                     double tMax, const IntersectOptions& opt,
+                                                     const SurfaceFilter& filter) {
+    while (h && filter.cutOut(ray, Hit{h->t, e.object, e.prim, h->u, h->v}))
         h = e.shape->intersect(e.prim, ray, h->t, tMax, opt);  // the next crossing
     return h;
+}
+
+/// The first hit on the entry in (tMin, tMax) that the filter does not cut out.
+inline std::optional<ShapeHit> firstKeptHit(const EmbreeUserTable::Entry& e, const Ray& ray,
+                                            double tMin, double tMax,
+                                            const IntersectOptions& opt,
+                                            const SurfaceFilter* filter) {
+    std::optional<ShapeHit> h = e.shape->intersect(e.prim, ray, tMin, tMax, opt);
+    if (!e.cutsOut || !filter) return h;  // cutOut() is false for every other entry
+    return firstUncut(e, h, ray, tMax, opt, *filter);
 }
 
 /// Whether a shadow feeler over (tMin, tMax) is stopped by a filtered entry.
@@ -73,96 +83,125 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = tableOf(args->geometryUserPtr).boxes[args->primID];
 }
 
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-    const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
-    EmbreeQueryContext& ctx = contextOf(args->context);
-    const unsigned n = args->N;
+/// Lane i of an intersect callback's n rays. Exact: the lane is the single
+/// ray whose double copy the context carries (n = 1, i = 0, known here at
+/// compile time, so the lane's fields are plain loads and stores: this is
+/// every query EmbreeAccelerator makes). Otherwise Embree's float lane is
+/// tested (bare replays without a double ray, packets, streams).
+template <bool Exact>
+inline void intersectLane(const RTCIntersectFunctionNArguments* args,
+                          const EmbreeUserTable& table, EmbreeQueryContext& ctx, unsigned n,
+                          unsigned i) {
     RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
     const uint32_t entry = args->primID;
     const EmbreeUserTable::Entry& e = table.entries[entry];
+    float& tfar = RTCRayN_tfar(rays, n, i);
+    std::optional<ShapeHit> h;
+    if constexpr (Exact) {
+        // Strict tMin < t < best-so-far in double (Shape contract). Exact
+        // ties (coplanar surfaces, e.g. a cone's cap on the floor) go to
+        // the lower entry (scene order), as in the naive loop, which visits
+        // objects in order: so the limit is opened by one ulp for a
+        // lower entry and the tie is settled here.
+        const bool winsTies = ctx.exactHit && entry < ctx.bestEntry;
+        const double tMax =
+            winsTies ? std::nextafter(ctx.bestT, std::numeric_limits<double>::infinity())
+                     : ctx.bestT;
+        h = firstKeptHit(e, *ctx.ray, ctx.tMin, tMax, table.options, ctx.filter);
+        if (h && !(h->t < ctx.bestT || (winsTies && h->t == ctx.bestT))) return;
+    } else {
+        h = firstKeptHit(e, laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i), tfar,
+                         table.options, ctx.filter);
+    }
+    if (!h) return;
+    // A triangle may already have shrunk tfar below this (double) hit.
+    const float t = static_cast<float>(h->t);
+    if (!(t <= tfar)) return;
+
+    // Embree wants every hit field written, but raylab never reads Ng
+    // (Scene::surfaceAt computes the exact normal for the winning hit),
+    // so a cheap stand-in facing the ray saves a surfaceAt per candidate.
+    tfar = t;
+    RTCHitN_Ng_x(hits, n, i) = -RTCRayN_dir_x(rays, n, i);
+    RTCHitN_Ng_y(hits, n, i) = -RTCRayN_dir_y(rays, n, i);
+    RTCHitN_Ng_z(hits, n, i) = -RTCRayN_dir_z(rays, n, i);
+    RTCHitN_u(hits, n, i) = static_cast<float>(h->u);
+    RTCHitN_v(hits, n, i) = static_cast<float>(h->v);
+    RTCHitN_primID(hits, n, i) = args->primID;
+    RTCHitN_geomID(hits, n, i) = args->geomID;
+    RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+    if constexpr (Exact) {
+        ctx.bestT = h->t;
+        ctx.bestU = h->u;
+        ctx.bestV = h->v;
+        ctx.bestEntry = entry;
+        ctx.exactHit = true;
+    }
+}
+
+/// Every valid lane of Embree's float rays. Out of line, so that the exact
+/// single ray's path does not pay for this loop's registers.
+[[gnu::noinline]] void intersectLanes(const RTCIntersectFunctionNArguments* args,
+                                      const EmbreeUserTable& table, EmbreeQueryContext& ctx) {
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1) intersectLane<false>(args, table, ctx, args->N, i);
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+    const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
+    EmbreeQueryContext& ctx = contextOf(args->context);
     // Single-ray queries from EmbreeAccelerator carry the exact double ray, so
     // the shape computes the same t, u, v as in the naive loop.
-    const bool exact = n == 1 && ctx.ray != nullptr;
-
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] != -1) continue;
-        float& tfar = RTCRayN_tfar(rays, n, i);
-        std::optional<ShapeHit> h;
-        if (exact) {
-            // Strict tMin < t < best-so-far in double (Shape contract). Exact
-            // ties (coplanar surfaces, e.g. a cone's cap on the floor) go to
-            // the lower entry (scene order), as in the naive loop, which visits
-            // objects in order: so the limit is opened by one ulp for a
-            // lower entry and the tie is settled here.
-            const bool winsTies = ctx.exactHit && entry < ctx.bestEntry;
-            const double tMax =
-                winsTies ? std::nextafter(ctx.bestT, std::numeric_limits<double>::infinity())
-                         : ctx.bestT;
-            h = firstKeptHit(e, *ctx.ray, ctx.tMin, tMax, table.options, ctx.filter);
-            if (h && !(h->t < ctx.bestT || (winsTies && h->t == ctx.bestT))) continue;
-        } else {
-            h = firstKeptHit(e, laneRay(rays, n, i, table.origin), RTCRayN_tnear(rays, n, i),
-                             tfar, table.options, ctx.filter);
-        }
-        if (!h) continue;
-        // A triangle may already have shrunk tfar below this (double) hit.
-        const float t = static_cast<float>(h->t);
-        if (!(t <= tfar)) continue;
-
-        // Embree wants every hit field written, but raylab never reads Ng
-        // (Scene::surfaceAt computes the exact normal for the winning hit),
-        // so a cheap stand-in facing the ray saves a surfaceAt per candidate.
-        tfar = t;
-        RTCHitN_Ng_x(hits, n, i) = -RTCRayN_dir_x(rays, n, i);
-        RTCHitN_Ng_y(hits, n, i) = -RTCRayN_dir_y(rays, n, i);
-        RTCHitN_Ng_z(hits, n, i) = -RTCRayN_dir_z(rays, n, i);
-        RTCHitN_u(hits, n, i) = static_cast<float>(h->u);
-        RTCHitN_v(hits, n, i) = static_cast<float>(h->v);
-        RTCHitN_primID(hits, n, i) = args->primID;
-        RTCHitN_geomID(hits, n, i) = args->geomID;
-        RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
-        if (exact) {
-            ctx.bestT = h->t;
-            ctx.bestU = h->u;
-            ctx.bestV = h->v;
-            ctx.bestEntry = entry;
-            ctx.exactHit = true;
-        }
+    if (args->N == 1 && ctx.ray != nullptr) {
+        if (args->valid[0] == -1) intersectLane<true>(args, table, ctx, 1, 0);
+        return;
     }
+    intersectLanes(args, table, ctx);
+}
+
+/// Lane i of an occlusion callback's n rays; Exact as for intersectLane.
+template <bool Exact>
+inline void occludedLane(const RTCOccludedFunctionNArguments* args, const EmbreeUserTable& table,
+                         EmbreeQueryContext& ctx, unsigned n, unsigned i) {
+    RTCRayN* rays = args->ray;
+    const EmbreeUserTable::Entry& e = table.entries[args->primID];
+    float& tfar = RTCRayN_tfar(rays, n, i);
+    // A transmitter stops an opaque feeler at its first crossing, which is
+    // what its exact test answers; only filtered shadows collect its kt.
+    const bool filtered = ctx.filter && (e.cutsOut || (e.transmits && ctx.shadow));
+    bool hit;
+    if (filtered) {
+        hit = Exact ? filteredEntryBlocks(e, *ctx.ray, ctx.tMin, ctx.bestT, table.options,
+                                          *ctx.filter, ctx.shadow)
+                    : filteredEntryBlocks(e, laneRay(rays, n, i, table.origin),
+                                          RTCRayN_tnear(rays, n, i), tfar, table.options,
+                                          *ctx.filter, ctx.shadow);
+    } else {
+        hit = Exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
+                    : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
+                                        RTCRayN_tnear(rays, n, i), tfar, table.options);
+        // Named for the shadow cache: its exact test alone is the answer.
+        if (Exact && hit) ctx.occluderEntry = args->primID;
+    }
+    if (hit) tfar = -kInfF;  // Embree's "occluded" marker
+}
+
+/// Every valid lane of Embree's float rays, out of line (see intersectLanes).
+[[gnu::noinline]] void occludedLanes(const RTCOccludedFunctionNArguments* args,
+                                     const EmbreeUserTable& table, EmbreeQueryContext& ctx) {
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1) occludedLane<false>(args, table, ctx, args->N, i);
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
     EmbreeQueryContext& ctx = contextOf(args->context);
-    const unsigned n = args->N;
-    RTCRayN* rays = args->ray;
-    const EmbreeUserTable::Entry& e = table.entries[args->primID];
-    const bool exact = n == 1 && ctx.ray != nullptr;
-
-    // A transmitter stops an opaque feeler at its first crossing, which is
-    // what its exact test answers; only filtered shadows collect its kt.
-    const bool filtered = ctx.filter && (e.cutsOut || (e.transmits && ctx.shadow));
-
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] != -1) continue;
-        float& tfar = RTCRayN_tfar(rays, n, i);
-        bool hit;
-        if (filtered) {
-            hit = exact ? filteredEntryBlocks(e, *ctx.ray, ctx.tMin, ctx.bestT, table.options,
-                                              *ctx.filter, ctx.shadow)
-                        : filteredEntryBlocks(e, laneRay(rays, n, i, table.origin),
-                                              RTCRayN_tnear(rays, n, i), tfar, table.options,
-                                              *ctx.filter, ctx.shadow);
-        } else {
-            hit = exact ? e.shape->occluded(e.prim, *ctx.ray, ctx.tMin, ctx.bestT, table.options)
-                        : e.shape->occluded(e.prim, laneRay(rays, n, i, table.origin),
-                                            RTCRayN_tnear(rays, n, i), tfar, table.options);
-            // Named for the shadow cache: its exact test alone is the answer.
-            if (hit && exact) ctx.occluderEntry = args->primID;
-        }
-        if (hit) tfar = -kInfF;  // Embree's "occluded" marker
+    if (args->N == 1 && ctx.ray != nullptr) {
+        if (args->valid[0] == -1) occludedLane<true>(args, table, ctx, 1, 0);
+        return;
     }
+    occludedLanes(args, table, ctx);
 }
 
 }  // namespace
