@@ -168,14 +168,7 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
     m_bounds = m_bounds.padded();
 
     for (const Vec3& v : m_vertices) m_radius = std::max(m_radius, length(v - m_centroid));
-    double shortestEdge = std::numeric_limits<double>::infinity();
-    for (size_t i = 0, n = m_vertices.size(); i < n; ++i) {
-        const double e = maxComponent(abs(m_vertices[(i + 1) % n] - m_vertices[i]));
-        if (e > 0) shortestEdge = std::min(shortestEdge, e);
-    }
-    const bool gridScale = shortestEdge >= kGridMinEdge &&
-                           maxComponent(abs(m_centroid)) + m_radius <= kGridMaxScale;
-    if (m_vertices.size() >= kGridMinVertices && gridScale) {
+    if (m_vertices.size() >= kGridMinVertices && gridScale()) {
         std::vector<Vec2> plane;
         plane.reserve(m_vertices.size());
         for (const Vec3& v : m_vertices)
@@ -189,6 +182,15 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
         // A grid that is all edge cells only costs time.
         if (grid->edgeFraction() < 0.75) m_grid = std::move(grid);
     }
+}
+
+bool Polygon::gridScale() const {
+    if (!(maxComponent(abs(m_centroid)) + m_radius <= kGridMaxScale)) return false;
+    for (size_t i = 0, n = m_vertices.size(); i < n; ++i) {
+        const double e = maxComponent(abs(m_vertices[(i + 1) % n] - m_vertices[i]));
+        if (e > 0 && e < kGridMinEdge) return false;
+    }
+    return true;
 }
 
 std::unique_ptr<Polygon> Polygon::create(const PolygonParams& params) {

@@ -107,6 +107,10 @@ private:
     ///   bytes (IntersectOptions::polygonChunkBoxes; the same answer either way)
     template <class T>
     bool insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d, bool chunkBoxes) const;
+    /// Whether the grid's error bound can hold for this polygon: every edge
+    /// of nonzero length at least kGridMinEdge, |centroid| + radius at most
+    /// kGridMaxScale (polygon.cpp).
+    bool gridScale() const;
     /// The grid's answer for the plane hit o + t·d (cosine = n·d), or -1 when
     /// it cannot be trusted to equal the watertight test's (see polygon.cpp).
     int insideByGrid(const Ray& ray, double t, double cosine, const Vec3& local) const;
