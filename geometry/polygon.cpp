@@ -30,11 +30,11 @@ constexpr size_t kGridMinVertices = 12;
 /// 16, 32 and 64 per vertex: render 293, 275, 263 M instructions (128x128), grid
 /// building 33, 48, 75 M; at 512x512 64 costs least.
 constexpr int kGridCellsPerVertex = 64;
-/// The grid stands in for the watertight test only at scales where that
-/// test's products neither underflow nor overflow (insideByGrid's bound
-/// assumes relative rounding): every edge at least this long (in its largest
-/// component; zero-length edges add an exact 0 and do not count), and the
-/// scale s of each query (centroid, origin, hit) at most kGridMaxScale.
+/// The grid stands in for the watertight test only at scales where the
+/// rounding of the shear and the plane hit stays relative (insideByGrid's
+/// bound assumes it): every edge at least this long (in its largest
+/// component; zero-length edges do not count), and the scale s of each
+/// query (centroid, origin, hit) at most kGridMaxScale.
 constexpr double kGridMinEdge = 0x1p-350;
 constexpr double kGridMaxScale = 0x1p350;
 /// Directions shorter than this (largest component) are left to the
@@ -53,10 +53,56 @@ constexpr size_t kChunk = 8;
 constexpr double kChunkCoordLimit = 0x1p1000;
 constexpr float kChunkCoordLimitF = 0x1p100f;
 
+/// x = m·2^e exactly, m an integer of at most 53 bits (finite x; subnormals too).
+struct ExactDouble {
+    int64_t m;
+    int e;
+};
+inline ExactDouble exactDouble(double x) {
+    int e = 0;
+    const double f = std::frexp(x, &e);  // x = f·2^e, 0.5 <= |f| < 1, exact
+    return {static_cast<int64_t>(std::ldexp(f, 53)), e - 53};
+}
+
+/// Sign of ax·by - ay·bx for finite doubles, exact whatever the magnitudes:
+/// each product is an integer of at most 106 bits times a power of two, and
+/// the two are compared by their leading bit, then by their aligned bits.
+int exactCrossSign(double ax, double ay, double bx, double by) {
+    const ExactDouble a = exactDouble(ax), b = exactDouble(by), c = exactDouble(ay),
+                      d = exactDouble(bx);
+    const bool lNeg = (a.m < 0) != (b.m < 0), rNeg = (c.m < 0) != (d.m < 0);
+    using U = unsigned __int128;
+    U lm = U(a.m < 0 ? -a.m : a.m) * U(b.m < 0 ? -b.m : b.m);
+    U rm = U(c.m < 0 ? -c.m : c.m) * U(d.m < 0 ? -d.m : d.m);
+    int le = a.e + b.e, re = c.e + d.e;
+    if (lm == 0 && rm == 0) return 0;
+    if (rm == 0) return lNeg ? -1 : 1;
+    if (lm == 0) return rNeg ? 1 : -1;
+    if (lNeg != rNeg) return lNeg ? -1 : 1;  // l - r has l's sign
+    const auto bits = [](U v) {
+        const uint64_t hi = uint64_t(v >> 64);
+        return hi ? 128 - __builtin_clzll(hi) : 64 - __builtin_clzll(uint64_t(v));
+    };
+    // Compare |l| with |r|: first by the position of the leading bit, then,
+    // aligned to the larger exponent's scale (both below 2^107), bit for bit.
+    int magnitude;
+    const int lTop = bits(lm) + le, rTop = bits(rm) + re;
+    if (lTop != rTop) {
+        magnitude = lTop > rTop ? 1 : -1;
+    } else {
+        if (le > re) lm <<= (le - re); else rm <<= (re - le);
+        magnitude = lm > rm ? 1 : (lm < rm ? -1 : 0);
+    }
+    return lNeg ? -magnitude : magnitude;
+}
+
 /// Exact sign of ax·by - ay·bx. The rounded value decides when it clears its
 /// error bound; otherwise the difference of the two exact products (each a
 /// double-word from twoProduct) is expanded exactly (Shewchuk's Two_Two_Diff)
-/// and its most significant non-zero component gives the sign.
+/// and its most significant non-zero component gives the sign. twoProduct's
+/// error term is exact only when its product neither underflows (below
+/// 2^-969 it may lose bits) nor overflows: products outside that range take
+/// exactCrossSign (float: the products are exact in double).
 template <class T>
 int crossSign(T ax, T ay, T bx, T by) {
     const T l = ax * by;
@@ -65,6 +111,22 @@ int crossSign(T ax, T ay, T bx, T by) {
     const T bound = T(4) * std::numeric_limits<T>::epsilon() * (std::abs(l) + std::abs(r));
     if (det > bound) return 1;
     if (det < -bound) return -1;
+    const bool finite = std::isfinite(ax) && std::isfinite(ay) && std::isfinite(bx) && std::isfinite(by);
+    if (finite) {
+        constexpr T kLow = std::is_same_v<T, float> ? 0x1p-100f : T(0x1p-960);
+        constexpr T kHigh = std::is_same_v<T, float> ? 0x1p100f : T(0x1p1000);
+        const auto safe = [&](T x, T y, T p) {
+            return x == T(0) || y == T(0) || (std::abs(p) >= kLow && std::abs(p) <= kHigh);
+        };
+        if (!safe(ax, by, l) || !safe(ay, bx, r)) {
+            if constexpr (std::is_same_v<T, float>) {
+                const double d = double(ax) * double(by) - double(ay) * double(bx);
+                return d > 0 ? 1 : (d < 0 ? -1 : 0);
+            } else {
+                return exactCrossSign(ax, ay, bx, by);
+            }
+        }
+    }
     T el, er;
     twoProduct(ax, by, el);
     twoProduct(ay, bx, er);
@@ -493,12 +555,12 @@ int Polygon::insideByGrid(const Ray& ray, double t, double cosine, const Vec3& l
     // test below uses 256u, bounds Euclidean norms by twice the largest
     // component, and lowers |n·d| by its own rounding error. NaN fails it.
     //
-    // All of this assumes relative rounding. The watertight test's sign
-    // products are about S² and its crossing determinants, where the grid
-    // answers, at least (shortest edge)·clearance·cos², so with every edge
-    // >= 2^-350 (the grid is built only then) and S <= 2^350 none of them
-    // underflows or overflows; |d| >= 2^-900 keeps n·d's underflow (2^-1074)
-    // below its allowance. Beyond that the watertight test answers alone.
+    // All of this assumes relative rounding in the shear, the plane hit and
+    // the frame's dot products (crossSign's signs are exact for any finite
+    // input). With every edge >= 2^-350 (the grid is built only then), so
+    // S >= 2^-351, S <= 2^350 and |d| >= 2^-900, nothing overflows and an
+    // underflow adds at most 2^-1074 per operation, far below the u·S and
+    // u·|d| terms allowed for. Beyond that the watertight test answers alone.
     const double dMax = maxComponent(abs(ray.d));
     const double s = 2 * (maxComponent(abs(ray.o)) + maxComponent(abs(m_centroid)) +
                           std::abs(t) * dMax) + m_radius;

@@ -185,6 +185,37 @@ TEST_CASE("polygon grid: extreme scales, where the watertight test's products un
     }
 }
 
+TEST_CASE("polygon grid: crossing determinants that underflow at ordinary scales") {
+    // Found by review: a 2x2 square with a notch whose bottom edge runs from
+    // (0.3, 0) to (0.2, 2^-1074). A ray straight down the middle passes 0.2
+    // from every edge, so it hits; but the crossing determinant of the notch
+    // bottom is about 2^-1076, whose products underflow. crossSign used to
+    // read their lost error terms as zero and sent the hit outside.
+    const std::vector<Vec2> notch = {{-1, -1},   {-0.5, -1}, {0, -1},     {0.5, -1},   {1, -1},
+                                     {1, -0.5},  {1, 0},     {1, 0.5},    {1, 1},      {0.7, 1},
+                                     {0.35, 1},  {0.3, 0},   {0.2, 0x1p-1074}, {0.15, 1}, {-0.3, 1},
+                                     {-1, 1},    {-1, 0.5},  {-1, 0},     {-1, -0.5}};
+    IntersectOptions without;
+    without.polygonGrid = false;
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+        CAPTURE(int(rule));
+        std::vector<Vec3> flat;
+        for (const Vec2& p : notch) flat.push_back({p.x, p.y, 0});
+        const auto a = makeGridPolygon(flat, rule);
+        const Ray down{{0, 0, 1}, {0, 0, -1}};
+        CHECK(a->intersect(0, down, 0, kInf, without).has_value());
+        CHECK(a->intersect(0, down, 0, kInf, {}).has_value());
+        // The same outline with the notch bottom on y = 0, in the plane z = x,
+        // and a direction whose y is subnormal (-2^-1070).
+        std::vector<Vec3> tilted;
+        for (const Vec2& p : notch) tilted.push_back({p.x, p.y == 0x1p-1074 ? 0 : p.y, p.x});
+        const auto b = makeGridPolygon(tilted, rule);
+        const Ray slant{{0, 0, 0.25}, {0, -0x1p-1070, -1}};
+        CHECK(b->intersect(0, slant, 0, kInf, without).has_value());
+        CHECK(b->intersect(0, slant, 0, kInf, {}).has_value());
+    }
+}
+
 TEST_CASE("polygon grid: a self-intersecting star under both fill rules") {
     for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
         const auto s = makeGridPolygon(star({0.3, -0.2, 1}), rule);
