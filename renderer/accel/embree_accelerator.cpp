@@ -2,8 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <stdexcept>
+
+#include <emmintrin.h>
 
 #include "renderer/accel/embree_factory.h"
 #include "renderer/accel/embree_float.h"
@@ -138,23 +141,40 @@ inline float floatBelow(double t) {
 }  // namespace
 
 bool EmbreeAccelerator::toEmbreeRay(const Ray& ray, double tMin, double tMax, RTCRay& out) const {
-    // Every query pays for this conversion (the bare replay does not), so it
-    // is written to compile without branches but the one that rejects.
-    const double ox = ray.o.x - m_origin.x, oy = ray.o.y - m_origin.y, oz = ray.o.z - m_origin.z;
+    // Every query pays for this conversion, so it is written with SSE2 (the
+    // x86-64 baseline) on the six coordinates in three pairs, (ox, oy),
+    // (oz, dx), (dy, dz): each lane is subtracted, compared and rounded to
+    // float exactly as the scalar code would (the test compares it with that
+    // code), and only the rejecting test branches.
+    static_assert(sizeof(Vec3) == 3 * sizeof(double) && offsetof(Ray, d) == sizeof(Vec3),
+                  "a ray is six consecutive doubles");
+    static_assert(offsetof(RTCRay, org_y) == offsetof(RTCRay, org_x) + sizeof(float) &&
+                      offsetof(RTCRay, dir_z) == offsetof(RTCRay, dir_y) + sizeof(float),
+                  "Embree's org_x/org_y and dir_y/dir_z are adjacent");
+    const __m128d oxy = _mm_sub_pd(_mm_loadu_pd(&ray.o.x), _mm_loadu_pd(&m_origin.x));
+    const __m128d ozdx = _mm_sub_pd(_mm_set_pd(ray.d.x, ray.o.z), _mm_set_pd(0.0, m_origin.z));
+    const __m128d dyz = _mm_loadu_pd(&ray.d.y);
     // One test for everything: a NaN or infinite double, and one beyond
-    // float range, would all convert to a non-finite float.
-    const bool inRange = (std::abs(ox) < kFloatOverflow) & (std::abs(oy) < kFloatOverflow) &
-                         (std::abs(oz) < kFloatOverflow) & (std::abs(ray.d.x) < kFloatOverflow) &
-                         (std::abs(ray.d.y) < kFloatOverflow) & (std::abs(ray.d.z) < kFloatOverflow);
-    if (!(inRange & (tMin < tMax))) return false;
-    out.org_x = static_cast<float>(ox);
-    out.org_y = static_cast<float>(oy);
-    out.org_z = static_cast<float>(oz);
-    out.dir_x = static_cast<float>(ray.d.x);
-    out.dir_y = static_cast<float>(ray.d.y);
-    out.dir_z = static_cast<float>(ray.d.z);
-    // A direction too short for float (or zero) cannot be traced.
-    if ((out.dir_x == 0.0f) & (out.dir_y == 0.0f) & (out.dir_z == 0.0f)) return false;
+    // float range, would all convert to a non-finite float (|x| < limit is
+    // false for NaN).
+    const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+    const __m128d limit = _mm_set1_pd(kFloatOverflow);
+    const __m128d inRange =
+        _mm_and_pd(_mm_and_pd(_mm_cmplt_pd(_mm_and_pd(oxy, absMask), limit),
+                              _mm_cmplt_pd(_mm_and_pd(ozdx, absMask), limit)),
+                   _mm_cmplt_pd(_mm_and_pd(dyz, absMask), limit));
+    if (!((_mm_movemask_pd(inRange) == 3) & (tMin < tMax))) return false;
+    const __m128 fxy = _mm_cvtpd_ps(oxy);   // (ox, oy, 0, 0), round to nearest
+    const __m128 fzx = _mm_cvtpd_ps(ozdx);  // (oz, dx, 0, 0)
+    const __m128 fyz = _mm_cvtpd_ps(dyz);   // (dy, dz, 0, 0)
+    _mm_storel_pi(reinterpret_cast<__m64*>(&out.org_x), fxy);
+    out.org_z = _mm_cvtss_f32(fzx);
+    out.dir_x = _mm_cvtss_f32(_mm_shuffle_ps(fzx, fzx, 1));
+    _mm_storel_pi(reinterpret_cast<__m64*>(&out.dir_y), fyz);
+    // A direction too short for float (or zero) cannot be traced: (dx, dx,
+    // dy, dz) all equal to zero (finite here, so no NaN).
+    const __m128 dirs = _mm_shuffle_ps(fzx, fyz, _MM_SHUFFLE(1, 0, 1, 1));
+    if (_mm_movemask_ps(_mm_cmpeq_ps(dirs, _mm_setzero_ps())) == 0xF) return false;
     // Rounded down so the float interval contains the double one; Embree
     // requires tnear >= 0.
     out.tnear = tMin > 0 ? floatBelow(std::min(tMin, static_cast<double>(FLT_MAX))) : 0.0f;

@@ -9,12 +9,14 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "accel/accel_test_helpers.h"
+#include "geometry/random.h"
 #include "renderer/accel/embree_accelerator.h"
 #include "renderer/accel/naive_accelerator.h"
 
@@ -75,6 +77,86 @@ TEST_CASE("embree: the Embree ray is relative to the origin, masked, and bracket
     CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {0, 0, 1}}, 1, 1, r));
     CHECK_FALSE(accel.toEmbreeRay(Ray{{1e300, 2, 3}, {0, 0, 1}}, 0, kInf, r));
     CHECK_FALSE(accel.toEmbreeRay(Ray{{101, 2, 3}, {1e-60, 0, 0}}, 0, kInf, r));
+}
+
+namespace {
+
+/// The conversion's rules stated one coordinate at a time (the scalar code
+/// the SSE2 version replaced): the reference for the test below.
+bool referenceEmbreeRay(const Vec3& origin, const Ray& ray, double tMin, double tMax, RTCRay& out) {
+    constexpr double kFloatOverflow = 0x1.ffffffp127;
+    const double ox = ray.o.x - origin.x, oy = ray.o.y - origin.y, oz = ray.o.z - origin.z;
+    const bool inRange = std::abs(ox) < kFloatOverflow && std::abs(oy) < kFloatOverflow &&
+                         std::abs(oz) < kFloatOverflow && std::abs(ray.d.x) < kFloatOverflow &&
+                         std::abs(ray.d.y) < kFloatOverflow && std::abs(ray.d.z) < kFloatOverflow;
+    if (!(inRange && tMin < tMax)) return false;
+    out.org_x = static_cast<float>(ox);
+    out.org_y = static_cast<float>(oy);
+    out.org_z = static_cast<float>(oz);
+    out.dir_x = static_cast<float>(ray.d.x);
+    out.dir_y = static_cast<float>(ray.d.y);
+    out.dir_z = static_cast<float>(ray.d.z);
+    if (out.dir_x == 0.0f && out.dir_y == 0.0f && out.dir_z == 0.0f) return false;
+    if (tMin > 0) {
+        float f = static_cast<float>(std::min(tMin, double(FLT_MAX)));
+        if (double(f) > tMin) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+        out.tnear = f;
+    } else {
+        out.tnear = 0.0f;
+    }
+    out.time = 0;
+    const float inf = std::numeric_limits<float>::infinity();
+    out.tfar = tMax > double(FLT_MAX) ? inf : (tMax < -double(FLT_MAX) ? -inf : float(tMax));
+    out.mask = 0xFFFFFFFFu;
+    out.id = 0;
+    out.flags = 0;
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("embree: the ray conversion gives the scalar rules' floats, bit for bit") {
+    const Scene scene = smallScene();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double overflow = 0x1.ffffffp127;
+    // Values where the rules change: around float overflow, around float
+    // underflow to zero (2^-150), signed zeros, subnormal doubles, NaN, Inf.
+    const std::vector<double> special = {0.0, -0.0, 1.0, -2.5, 0x1p-150, 0x1.000001p-150,
+                                         -0x1p-150, 0x1p-149, 0x1p-1074, -0x1p-1060, 1e-300,
+                                         double(FLT_MAX), -double(FLT_MAX), overflow, -overflow,
+                                         std::nextafter(overflow, 0.0), -std::nextafter(overflow, 0.0),
+                                         std::nextafter(overflow, kInf), 1e300, kInf, -kInf, nan};
+    for (const Vec3& origin : {Vec3{0, 0, 0}, Vec3{101, -2, 3e5}, Vec3{-1e15, 1e-20, 7}}) {
+        AccelOptions options;
+        options.origin = origin;
+        const EmbreeAccelerator accel(scene, options);
+        SplitMix64 rng(42);
+        const auto value = [&]() {
+            switch (rng.next() % 4) {
+                case 0: return special[rng.next() % special.size()];
+                case 1: return rng.uniform(-1000, 1000);
+                case 2: return std::ldexp(rng.uniform(-1, 1), int(rng.next() % 600) - 300);
+                default: return std::ldexp(rng.uniform(-1, 1), int(rng.next() % 60) - 170);
+            }
+        };
+        long accepted = 0, compared = 0;
+        for (int i = 0; i < 300000; ++i) {
+            const Ray ray{{value(), value(), value()}, {value(), value(), value()}};
+            const double tMin = i % 3 == 0 ? value() : 1e-6 * (i % 7);
+            const double tMax = i % 5 == 0 ? value() : kInf;
+            RTCRay got, want;
+            std::memset(&got, 0xAB, sizeof got);
+            std::memset(&want, 0xAB, sizeof want);
+            const bool g = accel.toEmbreeRay(ray, tMin, tMax, got);
+            const bool w = referenceEmbreeRay(origin, ray, tMin, tMax, want);
+            ++compared;
+            REQUIRE(g == w);
+            if (!g) continue;
+            ++accepted;
+            CHECK(std::memcmp(&got, &want, sizeof got) == 0);
+        }
+        CHECK(accepted > compared / 10);
+    }
 }
 
 TEST_CASE("embree: the ray conversion's edge cases: float range, tnear rounding, NaN") {
