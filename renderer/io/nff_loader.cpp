@@ -103,7 +103,7 @@ public:
     std::string_view next() {
         skipSpace();
         const char* start = m_p;
-        while (m_p < m_end && !isSpace(*m_p) && *m_p != '#') ++m_p;
+        while (m_p < m_end && !endsToken(*m_p)) ++m_p;
         m_tokenLine = m_line;
         return {start, size_t(m_p - start)};
     }
@@ -124,8 +124,15 @@ public:
     size_t remaining() const { return size_t(m_end - m_p); }
 
 private:
-    static bool isSpace(char c) {
-        return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+    /// Whitespace (' ', \n, \t, \r, \f, \v) or '#': one bit test, the hot
+    /// loop of every token (a third of gears' parse was this loop and the number's).
+    static bool endsToken(char c) {
+        const unsigned u = static_cast<unsigned char>(c);
+        constexpr uint64_t kEnds = (uint64_t(1) << ' ') | (uint64_t(1) << '\n') |
+                                   (uint64_t(1) << '\t') | (uint64_t(1) << '\r') |
+                                   (uint64_t(1) << '\f') | (uint64_t(1) << '\v') |
+                                   (uint64_t(1) << '#');
+        return u <= '#' && ((kEnds >> u) & 1u) != 0;
     }
 
     void skipSpace() {
