@@ -260,7 +260,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
     if (hint.primitive < m_user.entries.size()) {
-        // Only entries without a cut-out are named (occludedCallback): for an
+        // Only entries without a cut-out are named (occludedLane): for an
         // opaque feeler their exact test is the whole answer the callback
         // would give. A cut-out would bypass its filter here, so a hint
         // naming one is ignored: the walk below asks the filter.

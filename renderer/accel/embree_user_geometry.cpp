@@ -140,24 +140,32 @@ inline void intersectLane(const RTCIntersectFunctionNArguments* args,
     }
 }
 
+/// How a callback tests lane i of its n rays (intersectLane, occludedLane).
+template <class Args>
+using LaneTest = void (*)(const Args*, const EmbreeUserTable&, EmbreeQueryContext&, unsigned,
+                          unsigned);
+
 /// Every valid lane of Embree's float rays. Out of line, so that the exact
 /// single ray's path does not pay for this loop's registers.
-[[gnu::noinline]] void intersectLanes(const RTCIntersectFunctionNArguments* args,
-                                      const EmbreeUserTable& table, EmbreeQueryContext& ctx) {
+template <class Args, LaneTest<Args> FloatLane>
+[[gnu::noinline]] void floatLanes(const Args* args, const EmbreeUserTable& table,
+                                  EmbreeQueryContext& ctx) {
     for (unsigned i = 0; i < args->N; ++i)
-        if (args->valid[i] == -1) intersectLane<false>(args, table, ctx, args->N, i);
+        if (args->valid[i] == -1) FloatLane(args, table, ctx, args->N, i);
 }
 
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+/// The intersect and occlusion callbacks. Single-ray queries from
+/// EmbreeAccelerator carry the exact double ray, so the shape computes the
+/// same answer as in the naive loop; every other query tests the float lanes.
+template <class Args, LaneTest<Args> ExactLane, LaneTest<Args> FloatLane>
+void laneCallback(const Args* args) {
     const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
     EmbreeQueryContext& ctx = contextOf(args->context);
-    // Single-ray queries from EmbreeAccelerator carry the exact double ray, so
-    // the shape computes the same t, u, v as in the naive loop.
     if (args->N == 1 && ctx.ray != nullptr) {
-        if (args->valid[0] == -1) intersectLane<true>(args, table, ctx, 1, 0);
+        if (args->valid[0] == -1) ExactLane(args, table, ctx, 1, 0);
         return;
     }
-    intersectLanes(args, table, ctx);
+    floatLanes<Args, FloatLane>(args, table, ctx);
 }
 
 /// Lane i of an occlusion callback's n rays; Exact as for intersectLane.
@@ -187,23 +195,6 @@ inline void occludedLane(const RTCOccludedFunctionNArguments* args, const Embree
     if (hit) tfar = -kInfF;  // Embree's "occluded" marker
 }
 
-/// Every valid lane of Embree's float rays, out of line (see intersectLanes).
-[[gnu::noinline]] void occludedLanes(const RTCOccludedFunctionNArguments* args,
-                                     const EmbreeUserTable& table, EmbreeQueryContext& ctx) {
-    for (unsigned i = 0; i < args->N; ++i)
-        if (args->valid[i] == -1) occludedLane<false>(args, table, ctx, args->N, i);
-}
-
-void occludedCallback(const RTCOccludedFunctionNArguments* args) {
-    const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
-    EmbreeQueryContext& ctx = contextOf(args->context);
-    if (args->N == 1 && ctx.ray != nullptr) {
-        if (args->valid[0] == -1) occludedLane<true>(args, table, ctx, 1, 0);
-        return;
-    }
-    occludedLanes(args, table, ctx);
-}
-
 }  // namespace
 
 unsigned attachUserGeometry(const EmbreeDevice& device, RTCScene scene,
@@ -214,8 +205,12 @@ unsigned attachUserGeometry(const EmbreeDevice& device, RTCScene scene,
     rtcSetGeometryUserPrimitiveCount(geom.get(), static_cast<unsigned>(table.entries.size()));
     rtcSetGeometryUserData(geom.get(), const_cast<EmbreeUserTable*>(&table));
     rtcSetGeometryBoundsFunction(geom.get(), &boundsCallback, nullptr);
-    rtcSetGeometryIntersectFunction(geom.get(), &intersectCallback);
-    rtcSetGeometryOccludedFunction(geom.get(), &occludedCallback);
+    rtcSetGeometryIntersectFunction(
+        geom.get(), &laneCallback<RTCIntersectFunctionNArguments, intersectLane<true>,
+                                  intersectLane<false>>);
+    rtcSetGeometryOccludedFunction(
+        geom.get(), &laneCallback<RTCOccludedFunctionNArguments, occludedLane<true>,
+                                  occludedLane<false>>);
     rtcSetGeometryBuildQuality(geom.get(), quality);
     rtcCommitGeometry(geom.get());
     device.check("user geometry setup");
