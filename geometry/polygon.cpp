@@ -181,25 +181,24 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
       m_radius(0),
       m_rule(rule),
       m_test(test) {
-    for (int k = 0; k < 3; ++k) {
-        m_coords[k].reserve(m_vertices.size());
-        m_coordsF[k].reserve(m_vertices.size());
-    }
-    for (const Vec3& v : m_vertices) {
+    const size_t n = m_vertices.size();
+    m_coords.resize(3 * n);
+    m_coordsF.resize(3 * n);
+    for (size_t i = 0; i < n; ++i) {
+        const Vec3& v = m_vertices[i];
         m_bounds.expand(v);
-        for (int k = 0; k < 3; ++k) {
-            m_coords[k].push_back(v[k]);
-            m_coordsF[k].push_back(static_cast<float>(v[k]));
+        for (size_t k = 0; k < 3; ++k) {
+            m_coords[k * n + i] = v[int(k)];
+            m_coordsF[k * n + i] = static_cast<float>(v[int(k)]);
         }
     }
     // Chunk boxes for the watertight test's masks (see aboveBits).
-    const size_t n = m_vertices.size();
     if (n >= kMaskMinVertices) {
         const auto build = [&](const auto& coords, auto& lo, auto& hi, auto limit) {
-            for (int k = 0; k < 3; ++k) {
+            for (size_t k = 0; k < 3; ++k) {
                 for (size_t c = 0; c < n; c += kChunk) {
-                    const auto first = coords[k].begin() + std::ptrdiff_t(c);
-                    const auto last = coords[k].begin() + std::ptrdiff_t(std::min(n, c + kChunk));
+                    const auto first = coords.begin() + std::ptrdiff_t(k * n + c);
+                    const auto last = coords.begin() + std::ptrdiff_t(k * n + std::min(n, c + kChunk));
                     const auto [mn, mx] = std::minmax_element(first, last);
                     if (!(std::abs(*mn) <= limit && std::abs(*mx) <= limit)) {
                         lo = {};  // too large: every mask is computed vertex by vertex
@@ -211,8 +210,10 @@ Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Ve
                 }
             }
         };
-        build(m_coords, m_chunkLo, m_chunkHi, kChunkCoordLimit);
-        build(m_coordsF, m_chunkLoF, m_chunkHiF, kChunkCoordLimitF);
+        auto chunks = std::make_unique<ChunkBoxes>();
+        build(m_coords, chunks->lo, chunks->hi, kChunkCoordLimit);
+        build(m_coordsF, chunks->loF, chunks->hiF, kChunkCoordLimitF);
+        m_chunks = std::move(chunks);
     }
     // The bounding rectangle in the (u, v) axes.
     Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -275,6 +276,8 @@ std::unique_ptr<Polygon> Polygon::create(const PolygonParams& params) {
     // Drop consecutive duplicates (a closing vertex repeating the first included).
     std::vector<Vec3> vertices;
     std::vector<Vec3> normals;
+    vertices.reserve(in.size());
+    if (hasNormals) normals.reserve(in.size());
     for (size_t i = 0; i < in.size(); ++i) {
         if (!vertices.empty() && in[i] == vertices.back()) continue;
         vertices.push_back(in[i]);
@@ -347,12 +350,12 @@ bool Polygon::accepts(int winding, int crossings) const {
 
 template <>
 const double* Polygon::coords<double>(int axis) const {
-    return m_coords[axis].data();
+    return m_coords.data() + size_t(axis) * m_vertices.size();
 }
 
 template <>
 const float* Polygon::coords<float>(int axis) const {
-    return m_coordsF[axis].data();
+    return m_coordsF.data() + size_t(axis) * m_vertices.size();
 }
 
 template <class T>
@@ -419,7 +422,8 @@ uint64_t aboveMask(const T* Y, const T* Z, size_t n, T oy, T oz, T sy) {
 template <class T>
 bool Polygon::chunkBoxesUsable(T oy, T oz, T sy) const {
     const T limit = T(std::is_same_v<T, double> ? kChunkCoordLimit : kChunkCoordLimitF);
-    const bool built = std::is_same_v<T, double> ? !m_chunkLo[0].empty() : !m_chunkLoF[0].empty();
+    const bool built = m_chunks && (std::is_same_v<T, double> ? !m_chunks->lo[0].empty()
+                                                              : !m_chunks->loF[0].empty());
     // NaN fails every comparison, so it falls back to the vertex-by-vertex path.
     return built && std::abs(oy) <= limit && std::abs(oz) <= limit && std::abs(sy) <= T(1);
 }
@@ -433,9 +437,9 @@ uint64_t Polygon::aboveBits(size_t base, size_t m, bool boxes, int ky, int kz, T
     const std::array<std::vector<T>, 3>* lo;
     const std::array<std::vector<T>, 3>* hi;
     if constexpr (std::is_same_v<T, double>) {
-        lo = &m_chunkLo, hi = &m_chunkHi;
+        lo = &m_chunks->lo, hi = &m_chunks->hi;
     } else {
-        lo = &m_chunkLoF, hi = &m_chunkHiF;
+        lo = &m_chunks->loF, hi = &m_chunks->hiF;
     }
     // The sheared y, (Y - oy) - sy·(Z - oz), computed in rounded arithmetic,
     // is monotone in each input: rounding never reverses an order, so it grows

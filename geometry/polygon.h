@@ -133,14 +133,23 @@ private:
     template <class T>
     bool chunkBoxesUsable(T oy, T oz, T sy) const;
 
+    /// Per chunk of 8 consecutive vertices: the lowest and highest coordinate
+    /// on each axis, in double and rounded to float (rounding is monotone:
+    /// the float vertices' bounds); a precision's arrays are empty where its
+    /// coordinates are too large for the boxes.
+    struct ChunkBoxes {
+        std::array<std::vector<double>, 3> lo, hi;
+        std::array<std::vector<float>, 3> loF, hiF;
+    };
+
     std::vector<Vec3> m_vertices;
-    std::array<std::vector<double>, 3> m_coords;  ///< x, y, z of the vertices
-    std::array<std::vector<float>, 3> m_coordsF;  ///< the same, rounded to float
-    /// Per chunk of 8 consecutive vertices (polygons with many vertices
-    /// only): the lowest and highest coordinate on each axis, in double and
-    /// rounded to float (rounding is monotone: the float vertices' bounds).
-    std::array<std::vector<double>, 3> m_chunkLo, m_chunkHi;
-    std::array<std::vector<float>, 3> m_chunkLoF, m_chunkHiF;
+    /// x of every vertex, then y, then z (one allocation: SPD gears has
+    /// 9,217 quads, and three vectors per precision were a third of a quad's
+    /// memory, docs/benchmarks.md "Fresh memory").
+    std::vector<double> m_coords;
+    std::vector<float> m_coordsF;  ///< the same, rounded to float
+    /// Polygons with many vertices only (null otherwise).
+    std::unique_ptr<const ChunkBoxes> m_chunks;
     std::vector<Vec3> m_normals;                  ///< unit per-vertex shading normals, or empty
     Frame m_frame;                                ///< n = unit Newell normal
     Vec3 m_centroid;                              ///< vertex mean: the plane's reference point
