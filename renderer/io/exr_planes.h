@@ -1,53 +1,71 @@
 #pragma once
-// The pixel planes the EXR writer hands to OpenEXR, prepared from a Film:
-// RGBA and albedo converted to half, the FLOAT layers made safe, and the
-// Cryptomatte plane (ids hashed from object names, ranks merged by name).
+// The pixel planes the EXR writer compresses, prepared from a Film one range
+// of pixels at a time: RGBA and albedo converted to half, the FLOAT layers
+// made safe, and the Cryptomatte plane (ids hashed from object names, ranks
+// merged by name).
 //
-// Why a unit of its own: this preparation ran on the main thread alone
-// (~20 ms for a 512x512 frame, a serial part of every render's wall time,
-// docs/benchmarks.md bar 3). Every output value is a function of one pixel's
-// input values, so it is split over pixel ranges with TBB and the planes are
-// the same bytes for any thread count (tests/output/test_exr_planes.cpp
-// checks them against a one-pixel-at-a-time reference).
+// Why ranges: the writer prepares each 16-line block's planes just before it
+// compresses them, in the thread that compresses them, into buffers that
+// thread reuses. Planes for the whole frame were 70 bytes per pixel (18 MB at
+// 512x512) of fresh memory, and fresh memory is the dearest thing on this
+// project's VMs (~1.2-3 ms per MB of first touch, docs/benchmarks.md, "Fresh
+// memory"). Every output value is a function of one pixel's input values
+// (and of the whole-film ExrMatteLayout), so the bytes do not depend on how
+// the frame is split (tests/output/test_exr_planes.cpp checks every range
+// against a one-pixel-at-a-time reference).
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "renderer/film.h"
-#include "renderer/huge_array.h"
 
 namespace raylab {
 
+/// What the Cryptomatte layers need from the whole film before the header
+/// can be written.
+struct ExrMatteLayout {
+    /// Ranks written (even, >= the wanted count and >= what any pixel holds).
+    int ranks = 2;
+    /// The highest object index any pixel's coverage names (-1: none).
+    int maxObject = -1;
+    /// Object index -> Cryptomatte id (as a float), 0..maxObject.
+    std::vector<float> idOf;
+};
+
+/// Scans the film's mattes (TBB tasks on up to `threads` threads, 0: TBB's
+/// default): `wantedRanks` as ExrOptions::matteRanks, object names as
+/// ExrOptions::objectNames.
+ExrMatteLayout exrMatteLayout(const Film& film, const std::vector<std::string>& objectNames,
+                              int wantedRanks, int threads);
+
+/// The planes of pixels [begin, end) of a film (row-major pixel indices);
+/// element 0 of each plane is pixel `begin`. The pointers are valid until the
+/// next prepareExrPlanes on the same ExrPlanes or a change to the film.
 struct ExrPlanes {
-    /// RGBA as FLOAT (floatPixels) or half bits (otherwise; rgbaF is then null).
+    /// RGBA as FLOAT (floatPixels; rgbaH is then null) or half bits (rgbaF null).
     const float* rgbaF = nullptr;
-    HugeArray<uint16_t> rgbaH;
-    /// The FLOAT layers: the film's own planes when they are already safe
-    /// (always, for a rendered film), else the safe copies below.
+    const uint16_t* rgbaH = nullptr;
+    /// The FLOAT layers: the film's own values when they are already safe
+    /// (always, for a rendered film), else safe copies.
     const float* z = nullptr;
     const float* distance = nullptr;
     const float* normal = nullptr;
     const float* objectId = nullptr;
-    HugeArray<uint16_t> albedo;  ///< half bits, 3 per pixel
-    /// Cryptomatte ranks written (even, >= the wanted count and >= what any
-    /// pixel holds) and per pixel `matteRanks` (id, coverage) float pairs.
-    int matteRanks = 0;
-    HugeArray<float> crypto;
-    /// The highest object index any pixel's coverage names (-1: none).
-    int maxMatteObject = -1;
+    const uint16_t* albedo = nullptr;  ///< half bits, 3 per pixel
+    /// Per pixel ExrMatteLayout::ranks (id, coverage) float pairs, by
+    /// decreasing coverage; unused ranks are (0, 0).
+    const float* crypto = nullptr;
 
-    // Storage for planes the film could not lend (empty AOV planes, values
-    // that are NaN or infinite).
-    FilmPlane rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
+    // Storage, reused from call to call (grown, never shrunk).
+    std::vector<uint16_t> rgbaHalf, albedoHalf;
+    std::vector<float> cryptoValues, rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
 };
 
-/// Prepares the planes of `film` (whose layer sizes writeExr has checked):
-/// `wantedRanks` as ExrOptions::matteRanks, object names as
-/// ExrOptions::objectNames. `threads`: at most this many threads (0: TBB's
-/// default); the result does not depend on it.
-ExrPlanes prepareExrPlanes(const Film& film, bool floatPixels,
-                           const std::vector<std::string>& objectNames, int wantedRanks,
-                           int threads);
+/// Fills `out` with pixels [begin, end) of `film` (whose layer sizes writeExr
+/// has checked), on the calling thread.
+void prepareExrPlanes(const Film& film, size_t begin, size_t end, bool floatPixels,
+                      const ExrMatteLayout& mattes, ExrPlanes& out);
 
 }  // namespace raylab

@@ -17,6 +17,7 @@
 #include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfThreading.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
@@ -58,24 +59,51 @@ Imf::Compression toImf(ExrCompression c) {
     return Imf::ZIP_COMPRESSION;
 }
 
-/// Slice wants a mutable char pointer even for output.
-template <class T>
-char* bytes(const T* p) {
-    return reinterpret_cast<char*>(const_cast<T*>(p));
-}
-
 /// The film's pixels in full-image coordinates.
 Imath::Box2i exrDataWindow(const Film& film) {
     return Imath::Box2i({film.originX, film.originY},
                         {film.originX + film.width - 1, film.originY + film.height - 1});
 }
 
-/// A slice whose first element is the data window's top-left pixel
-/// (OpenEXR addresses slices from pixel (0, 0) of the display window).
-Imf::Slice sliceIn(const Imath::Box2i& dataWindow, Imf::PixelType type, char* first, size_t xStride,
-                   size_t yStride) {
-    return Imf::Slice::Make(type, first, dataWindow, xStride, yStride);
+/// The planes of ExrPlanes a channel can come from.
+enum class Plane { RgbaF, RgbaH, Z, Distance, Normal, Albedo, ObjectId, Crypto };
+
+/// One channel of the file: value `component` of the `components` that
+/// plane `plane` holds per pixel.
+struct FilmChannel {
+    std::string name;
+    Imf::PixelType type;
+    Plane plane;
+    int component;
+    int components;
+};
+
+/// Where channel `c`'s values are in `planes` (`width` pixels per line).
+ExrChannelSource sourceOf(const FilmChannel& c, const ExrPlanes& planes, size_t width) {
+    const void* data = nullptr;
+    switch (c.plane) {
+        case Plane::RgbaF: data = planes.rgbaF; break;
+        case Plane::RgbaH: data = planes.rgbaH; break;
+        case Plane::Z: data = planes.z; break;
+        case Plane::Distance: data = planes.distance; break;
+        case Plane::Normal: data = planes.normal; break;
+        case Plane::Albedo: data = planes.albedo; break;
+        case Plane::ObjectId: data = planes.objectId; break;
+        case Plane::Crypto: data = planes.crypto; break;
+    }
+    ExrChannelSource s;
+    s.size = c.type == Imf::HALF ? 2 : 4;
+    s.base = static_cast<const char*>(data) + s.size * size_t(c.component);
+    s.xStride = ptrdiff_t(s.size * size_t(c.components));
+    s.yStride = s.xStride * ptrdiff_t(width);
+    return s;
 }
+
+/// One thread's block: its planes and the channels' sources in them.
+struct BlockPlanes {
+    ExrPlanes planes;
+    std::vector<ExrChannelSource> sources;
+};
 
 }  // namespace
 
@@ -103,12 +131,12 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     checkLayerSize(path, "objectId", film.objectId.size(), n);
     checkLayerSize(path, "mattes", film.mattes.size(), n * kMatteRanks);
 
-    // Planes to write, prepared on every core the render had (exr_planes.h);
-    // interleaved layers keep the Film's layout and use strides.
-    const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
-    const ExrPlanes planes =
-        prepareExrPlanes(film, opts.floatPixels, opts.objectNames, opts.matteRanks, opts.threads);
-    const int matteRanks = planes.matteRanks;
+    // The Cryptomatte layout needs the whole film (how many ranks, which
+    // objects) before the header can be written; the planes are prepared
+    // block by block below (exr_planes.h).
+    const ExrMatteLayout mattes =
+        exrMatteLayout(film, opts.objectNames, opts.matteRanks, opts.threads);
+    const int matteRanks = mattes.ranks;
     // A crop render is the data window inside the full image's display window.
     const Imath::Box2i dataWindow = exrDataWindow(film);
     Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
@@ -122,7 +150,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     const std::string cryptoPrefix = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/";
     std::vector<std::string> names;
     {
-        const int maxObject = std::max(int(opts.objectNames.size()) - 1, planes.maxMatteObject);
+        const int maxObject = std::max(int(opts.objectNames.size()) - 1, mattes.maxObject);
         names.reserve(size_t(maxObject + 1));
         for (int k = 0; k <= maxObject; ++k) names.push_back(matteName(opts.objectNames, k));
     }
@@ -140,61 +168,76 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     if (!opts.accel.empty()) header.insert("raylab/accel", ExrStringAttribute(opts.accel));
     if (opts.frame != 0) header.insert("raylab/frame", Imf::IntAttribute(opts.frame));
 
-    Imf::ChannelList& channels = header.channels();
-    Imf::FrameBuffer fb;
-    const size_t w = size_t(film.width);
-    const char* rgbaNames[4] = {"R", "G", "B", "A"};
-    for (int c = 0; c < 4; ++c) {
-        channels.insert(rgbaNames[c], Imf::Channel(rgbaType));
-        if (opts.floatPixels)
-            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(planes.rgbaF + c),
-                                               4 * sizeof(float), 4 * sizeof(float) * w));
-        else
-            fb.insert(rgbaNames[c], sliceIn(dataWindow, Imf::HALF,
-                                            bytes(planes.rgbaH.data() + c), 4 * sizeof(half),
-                                            4 * sizeof(half) * w));
-    }
-    channels.insert("Z", Imf::Channel(Imf::FLOAT));
-    fb.insert("Z",
-              sliceIn(dataWindow, Imf::FLOAT, bytes(planes.z), sizeof(float), sizeof(float) * w));
-    channels.insert("distance", Imf::Channel(Imf::FLOAT));
-    fb.insert("distance",
-              sliceIn(dataWindow, Imf::FLOAT, bytes(planes.distance), sizeof(float),
-                      sizeof(float) * w));
+    // Every channel and the plane it comes from, interleaved layers with
+    // strides (the Film's layout).
+    const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
+    const Plane rgbaPlane = opts.floatPixels ? Plane::RgbaF : Plane::RgbaH;
+    std::vector<FilmChannel> layout;
+    for (const char* c : {"R", "G", "B", "A"})
+        layout.push_back({c, rgbaType, rgbaPlane, int(layout.size()), 4});
+    layout.push_back({"Z", Imf::FLOAT, Plane::Z, 0, 1});
+    layout.push_back({"distance", Imf::FLOAT, Plane::Distance, 0, 1});
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
-        channels.insert(normalNames[c], Imf::Channel(Imf::FLOAT));
-        fb.insert(normalNames[c], sliceIn(dataWindow, Imf::FLOAT, bytes(planes.normal + c),
-                                             3 * sizeof(float), 3 * sizeof(float) * w));
-        channels.insert(albedoNames[c], Imf::Channel(Imf::HALF));
-        fb.insert(albedoNames[c], sliceIn(dataWindow, Imf::HALF, bytes(planes.albedo.data() + c),
-                                             3 * sizeof(half), 3 * sizeof(half) * w));
+        layout.push_back({normalNames[c], Imf::FLOAT, Plane::Normal, c, 3});
+        layout.push_back({albedoNames[c], Imf::HALF, Plane::Albedo, c, 3});
     }
-    channels.insert("objectId", Imf::Channel(Imf::FLOAT));
-    fb.insert("objectId", sliceIn(dataWindow, Imf::FLOAT, bytes(planes.objectId), sizeof(float),
-                                     sizeof(float) * w));
+    layout.push_back({"objectId", Imf::FLOAT, Plane::ObjectId, 0, 1});
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
-    const size_t cryptoStride = 2 * size_t(matteRanks) * sizeof(float);
     for (int layer = 0; layer < matteRanks / 2; ++layer) {
         const std::string base = std::string(kCryptoObjectLayer) + (layer < 10 ? "0" : "") +
                                  std::to_string(layer) + ".";
         const char* components[4] = {"R", "G", "B", "A"};
-        for (int c = 0; c < 4; ++c) {
-            const std::string name = base + components[c];
-            channels.insert(name, Imf::Channel(Imf::FLOAT));
-            fb.insert(name, sliceIn(dataWindow, Imf::FLOAT,
-                                    bytes(planes.crypto.data() + 4 * layer + c), cryptoStride,
-                                    cryptoStride * w));
-        }
+        for (int c = 0; c < 4; ++c)
+            layout.push_back({base + components[c], Imf::FLOAT, Plane::Crypto, 4 * layer + c,
+                              2 * matteRanks});
     }
+    for (const FilmChannel& c : layout) header.channels().insert(c.name, Imf::Channel(c.type));
 
+    const size_t w = size_t(film.width);
     // ZIP and ZIPS (the default): raylab's own chunk writer, igzip on
     // every core the render had (exr_zip_file.h). Blocks are compressed in
     // parallel and written in scan-line order, so the bytes stay deterministic.
     if (opts.compression == ExrCompression::Zip || opts.compression == ExrCompression::Zips) {
-        writeFileAtomically(path, encodeExrZipFile(header, fb, opts.threads), group);
+        // The channels in the file's order (the header's list is sorted by name).
+        std::vector<const FilmChannel*> fileOrder;
+        for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+            fileOrder.push_back(&*std::find_if(layout.begin(), layout.end(),
+                                               [&](const FilmChannel& c) { return c.name == it.name(); }));
+        // Each thread prepares the planes of the block it compresses, a line
+        // at a time, in buffers it reuses (70 bytes per pixel of one line,
+        // not of the frame).
+        tbb::enumerable_thread_specific<BlockPlanes> scratch;
+        const size_t bytesPerLine = [&] {
+            size_t bytes = 0;
+            for (const FilmChannel* c : fileOrder) bytes += (c->type == Imf::HALF ? 2 : 4) * w;
+            return bytes;
+        }();
+        const ExrBlockLines lines = [&](int y0, int y1, unsigned char* raw) {
+            BlockPlanes& b = scratch.local();
+            for (int y = y0; y < y1; ++y, raw += bytesPerLine) {
+                const size_t row = size_t(y - film.originY);
+                prepareExrPlanes(film, row * w, (row + 1) * w, opts.floatPixels, mattes, b.planes);
+                b.sources.clear();
+                for (const FilmChannel* c : fileOrder)
+                    b.sources.push_back(sourceOf(*c, b.planes, w));
+                gatherExrLines(b.sources, film.width, 1, raw);
+            }
+        };
+        writeFileAtomically(path, [&](const std::string& tmp) {
+            writeExrZipFile(tmp, header, lines, opts.threads);
+        }, group);
         return;
+    }
+    // Other compressions: the whole frame's planes, handed to OpenEXR.
+    ExrPlanes planes;
+    prepareExrPlanes(film, 0, n, opts.floatPixels, mattes, planes);
+    Imf::FrameBuffer fb;
+    for (const FilmChannel& c : layout) {
+        const ExrChannelSource s = sourceOf(c, planes, w);
+        fb.insert(c.name, Imf::Slice::Make(c.type, const_cast<char*>(s.base), dataWindow,
+                                           size_t(s.xStride), size_t(s.yStride)));
     }
     // The other compressions go through OpenEXR, on its worker pool.
     const int threads =

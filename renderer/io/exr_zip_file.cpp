@@ -1,18 +1,22 @@
 #include "renderer/io/exr_zip_file.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <emmintrin.h>
 #include <isa-l/igzip_lib.h>
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfStdIO.h>
@@ -39,20 +43,11 @@ bool usesLongNames(const Imf::Header& header) {
 
 size_t pixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
 
-/// Where one channel's values come from: base + x * xStride + y * yStride
-/// (OpenEXR's slice addressing, in data-window coordinates).
-struct ChannelSource {
-    const char* base = nullptr;  ///< null: zeros
-    size_t size = 0;             ///< bytes per value
-    ptrdiff_t xStride = 0;
-    ptrdiff_t yStride = 0;
-};
-
-/// One thread's buffers: the raw block, its pre-pass, its deflate stream, and
-/// igzip's hash tables. Reused block after block: fresh zeroed pages for
-/// each block's output were 3% of balls' process (perf, clear_page).
+/// One thread's buffers: the raw block, its pre-pass, and igzip's hash
+/// tables. Reused block after block: fresh zeroed pages for each block were
+/// 3% of balls' process (perf, clear_page).
 struct Deflater {
-    std::vector<unsigned char> raw, prepassed, stream;
+    std::vector<unsigned char> raw, prepassed;
     std::vector<uint8_t> levelBuffer = std::vector<uint8_t>(ISAL_DEF_LVL2_DEFAULT);
 
     /// The zlib stream of in[0, n) in `out` (capacity n - 1), or 0 when it
@@ -81,6 +76,57 @@ struct Deflater {
             throw std::runtime_error("igzip deflate failed (" + std::to_string(result) + ")");
         return stream.total_out;
     }
+};
+
+/// Where the file's bytes go: appended in order, and the offset table
+/// written over the place kept for it.
+class ByteSink {
+public:
+    virtual ~ByteSink() = default;
+    virtual void append(const void* bytes, size_t n) = 0;
+    virtual void writeAt(uint64_t offset, const void* bytes, size_t n) = 0;
+};
+
+class StringSink final : public ByteSink {
+public:
+    explicit StringSink(std::string& out) : m_out(out) {}
+    void append(const void* bytes, size_t n) override {
+        m_out.append(static_cast<const char*>(bytes), n);
+    }
+    void writeAt(uint64_t offset, const void* bytes, size_t n) override {
+        std::memcpy(m_out.data() + offset, bytes, n);
+    }
+
+private:
+    std::string& m_out;
+};
+
+class FileSink final : public ByteSink {
+public:
+    explicit FileSink(const std::string& path) : m_file(std::fopen(path.c_str(), "wb")) {
+        if (!m_file) fail("cannot open");
+    }
+    ~FileSink() override {
+        if (m_file) std::fclose(m_file);
+    }
+    void append(const void* bytes, size_t n) override {
+        if (std::fwrite(bytes, 1, n, m_file) != n) fail("short write");
+    }
+    void writeAt(uint64_t offset, const void* bytes, size_t n) override {
+        if (fseeko(m_file, off_t(offset), SEEK_SET) != 0) fail("cannot seek");
+        append(bytes, n);
+    }
+    /// Flushes and closes (a full disk may only show up here).
+    void close() {
+        std::FILE* f = std::exchange(m_file, nullptr);
+        if (std::fclose(f) != 0) fail("close failed");
+    }
+
+private:
+    [[noreturn]] static void fail(const char* what) {
+        throw std::runtime_error(std::string(what) + ": " + std::strerror(errno));
+    }
+    std::FILE* m_file;
 };
 
 /// The bytes of an int32 or uint64 field (EXR is little-endian, like every
@@ -142,108 +188,182 @@ void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out) {
     out[0] = raw[0];  // the first byte has no predecessor
 }
 
-std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
-                             int threads) {
+void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int lines,
+                    unsigned char* raw) {
+    for (int k = 0; k < lines; ++k)
+        for (const ExrChannelSource& s : sources) {
+            const size_t lineBytes = s.size * size_t(width);
+            if (!s.base) {
+                std::memset(raw, 0, lineBytes);
+            } else {
+                const char* p = s.base + ptrdiff_t(k) * s.yStride;
+                if (s.xStride == ptrdiff_t(s.size)) {
+                    std::memcpy(raw, p, lineBytes);
+                } else if (s.size == 4) {
+                    for (int x = 0; x < width; ++x, p += s.xStride)
+                        std::memcpy(raw + 4 * size_t(x), p, 4);
+                } else {
+                    for (int x = 0; x < width; ++x, p += s.xStride)
+                        std::memcpy(raw + 2 * size_t(x), p, 2);
+                }
+            }
+            raw += lineBytes;
+        }
+}
+
+namespace {
+
+/// The checked shape of a ZIP or ZIPS scan-line file.
+struct BlockLayout {
+    Imath::Box2i dataWindow;
+    int width = 0, linesPerBlock = 0, blocks = 0;
+    size_t bytesPerLine = 0;
+};
+
+BlockLayout blockLayout(const Imf::Header& header) {
     const Imf::Compression compression = header.compression();
     if (compression != Imf::ZIP_COMPRESSION && compression != Imf::ZIPS_COMPRESSION)
         throw std::logic_error("encodeExrZipFile: the header's compression is not ZIP or ZIPS");
     if (header.hasTileDescription() || header.hasType())
         throw std::logic_error("encodeExrZipFile: only single-part scan-line images");
     header.sanityCheck();
-
-    const Imath::Box2i& dw = header.dataWindow();
-    const int width = dw.max.x - dw.min.x + 1;
-    const int height = dw.max.y - dw.min.y + 1;
-    const int linesPerBlock = compression == Imf::ZIP_COMPRESSION ? 16 : 1;
-    const int blocks = (height + linesPerBlock - 1) / linesPerBlock;
-
-    // Channels in the file's order (the channel list is sorted by name).
-    std::vector<ChannelSource> sources;
-    size_t bytesPerLine = 0;
+    BlockLayout l;
+    l.dataWindow = header.dataWindow();
+    l.width = l.dataWindow.max.x - l.dataWindow.min.x + 1;
+    const int height = l.dataWindow.max.y - l.dataWindow.min.y + 1;
+    l.linesPerBlock = compression == Imf::ZIP_COMPRESSION ? 16 : 1;
+    l.blocks = (height + l.linesPerBlock - 1) / l.linesPerBlock;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
         const Imf::Channel& channel = it.channel();
         if (channel.xSampling != 1 || channel.ySampling != 1)
             throw std::logic_error(std::string("encodeExrZipFile: channel ") + it.name() +
                                    " is subsampled");
-        ChannelSource source;
+        l.bytesPerLine += pixelTypeSize(channel.type) * size_t(l.width);
+    }
+    return l;
+}
+
+/// Magic, version, header, a kept place for the offset table, then each
+/// block (gathered raw lines -> pre-pass -> zlib stream, or raw when deflate
+/// does not shrink it, which OpenEXR's reader recognises by size) in
+/// scan-line order; the offset table last.
+void streamFile(const Imf::Header& header, const ExrBlockLines& lines, int threads,
+                ByteSink& sink) {
+    const BlockLayout layout = blockLayout(header);
+    const Imath::Box2i& dw = layout.dataWindow;
+    std::string head;
+    appendBytes(head, kExrMagic);
+    appendBytes(head, int32_t(kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0)));
+    {
+        Imf::StdOSStream os;
+        header.writeTo(os);
+        head += os.str();
+    }
+    sink.append(head.data(), head.size());
+    // The table's place (zeros until the chunks' offsets are known).
+    const uint64_t tableOffset = head.size();
+    std::vector<uint64_t> offsets(size_t(layout.blocks), 0);
+    sink.append(offsets.data(), 8 * offsets.size());
+    uint64_t offset = tableOffset + 8 * offsets.size();
+
+    const size_t maxBlockBytes = layout.bytesPerLine * size_t(layout.linesPerBlock);
+    runWithThreads(threads, [&] {
+        // Two blocks in flight per thread: one compressing, one waiting for
+        // its turn to be written.
+        const size_t tokens = 2 * size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+        struct Chunk {
+            int block = 0;
+            size_t size = 0;
+            /// Left uninitialised: only the pages a deflate stream writes are touched.
+            std::unique_ptr<unsigned char[]> bytes;
+        };
+        // A block's chunk is slot block % tokens: the pipeline starts a block
+        // only when fewer than `tokens` are in flight, and finishes them in
+        // order, so the block `tokens` before it has been written.
+        std::vector<Chunk> slots(tokens);
+        tbb::enumerable_thread_specific<Deflater> deflaters;
+        int next = 0;
+        tbb::parallel_pipeline(
+            tokens,
+            tbb::make_filter<void, Chunk*>(tbb::filter_mode::serial_in_order,
+                                           [&](tbb::flow_control& control) -> Chunk* {
+                                               if (next == layout.blocks) {
+                                                   control.stop();
+                                                   return nullptr;
+                                               }
+                                               Chunk* c = &slots[size_t(next) % tokens];
+                                               c->block = next++;
+                                               return c;
+                                           }) &
+                tbb::make_filter<Chunk*, Chunk*>(
+                    tbb::filter_mode::parallel,
+                    [&](Chunk* c) {
+                        Deflater& d = deflaters.local();
+                        const int y0 = dw.min.y + c->block * layout.linesPerBlock;
+                        const int y1 = std::min(y0 + layout.linesPerBlock, dw.max.y + 1);
+                        const size_t n = layout.bytesPerLine * size_t(y1 - y0);
+                        d.raw.resize(n);
+                        lines(y0, y1, d.raw.data());
+                        d.prepassed.resize(n);
+                        exrZipPrepass(d.raw.data(), n, d.prepassed.data());
+                        if (!c->bytes) c->bytes.reset(new unsigned char[maxBlockBytes]);
+                        c->size = d.deflate(d.prepassed.data(), n, c->bytes.get());
+                        if (c->size == 0) {
+                            std::memcpy(c->bytes.get(), d.raw.data(), n);
+                            c->size = n;
+                        }
+                        return c;
+                    }) &
+                tbb::make_filter<Chunk*, void>(tbb::filter_mode::serial_in_order, [&](Chunk* c) {
+                    offsets[size_t(c->block)] = offset;
+                    int32_t head[2] = {dw.min.y + c->block * layout.linesPerBlock,
+                                       int32_t(c->size)};
+                    sink.append(head, sizeof head);
+                    sink.append(c->bytes.get(), c->size);
+                    offset += 8 + c->size;
+                }));
+    });
+    sink.writeAt(tableOffset, offsets.data(), 8 * offsets.size());
+}
+
+}  // namespace
+
+void writeExrZipFile(const std::string& path, const Imf::Header& header,
+                     const ExrBlockLines& lines, int threads) {
+    FileSink sink(path);
+    streamFile(header, lines, threads, sink);
+    sink.close();
+}
+
+std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
+                             int threads) {
+    const BlockLayout layout = blockLayout(header);
+    // Channels in the file's order (the channel list is sorted by name), each
+    // addressed from the data window's left edge of line 0.
+    std::vector<ExrChannelSource> sources;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+        const Imf::Channel& channel = it.channel();
+        ExrChannelSource source;
         source.size = pixelTypeSize(channel.type);
         if (const Imf::Slice* slice = frameBuffer.findSlice(it.name())) {
             if (slice->type != channel.type || slice->xSampling != 1 || slice->ySampling != 1)
                 throw std::logic_error(std::string("encodeExrZipFile: the slice of channel ") +
                                        it.name() + " has another type or sampling");
-            source.base = slice->base;
+            source.base = slice->base + ptrdiff_t(layout.dataWindow.min.x) * ptrdiff_t(slice->xStride);
             source.xStride = ptrdiff_t(slice->xStride);
             source.yStride = ptrdiff_t(slice->yStride);
         }
         sources.push_back(source);
-        bytesPerLine += source.size * size_t(width);
     }
-
-    // Each block: gathered raw lines -> pre-pass -> zlib stream (or raw when
-    // deflate does not shrink it, which OpenEXR's reader recognises by size).
-    std::vector<std::vector<unsigned char>> packed(static_cast<size_t>(blocks));
-    tbb::enumerable_thread_specific<Deflater> deflaters;
-    auto compressBlocks = [&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, blocks), [&](const tbb::blocked_range<int>& r) {
-            Deflater& d = deflaters.local();
-            for (int b = r.begin(); b != r.end(); ++b) {
-                const int y0 = dw.min.y + b * linesPerBlock;
-                const int y1 = std::min(y0 + linesPerBlock, dw.max.y + 1);
-                const size_t n = bytesPerLine * size_t(y1 - y0);
-                d.raw.resize(n);
-                unsigned char* out = d.raw.data();
-                for (int y = y0; y < y1; ++y)
-                    for (const ChannelSource& s : sources) {
-                        const size_t lineBytes = s.size * size_t(width);
-                        if (!s.base) {
-                            std::memset(out, 0, lineBytes);
-                        } else {
-                            const char* p = s.base + ptrdiff_t(y) * s.yStride +
-                                            ptrdiff_t(dw.min.x) * s.xStride;
-                            if (s.xStride == ptrdiff_t(s.size)) {
-                                std::memcpy(out, p, lineBytes);
-                            } else if (s.size == 4) {
-                                for (int x = 0; x < width; ++x, p += s.xStride)
-                                    std::memcpy(out + 4 * size_t(x), p, 4);
-                            } else {
-                                for (int x = 0; x < width; ++x, p += s.xStride)
-                                    std::memcpy(out + 2 * size_t(x), p, 2);
-                            }
-                        }
-                        out += lineBytes;
-                    }
-                d.prepassed.resize(n);
-                exrZipPrepass(d.raw.data(), n, d.prepassed.data());
-                d.stream.resize(n);
-                const size_t size = d.deflate(d.prepassed.data(), n, d.stream.data());
-                const unsigned char* chunk = size ? d.stream.data() : d.raw.data();
-                packed[size_t(b)].assign(chunk, chunk + (size ? size : n));
-            }
-        });
+    const ExrBlockLines lines = [&](int y0, int y1, unsigned char* raw) {
+        std::vector<ExrChannelSource> block = sources;
+        for (ExrChannelSource& s : block)
+            if (s.base) s.base += ptrdiff_t(y0) * s.yStride;
+        gatherExrLines(block, layout.width, y1 - y0, raw);
     };
-    runWithThreads(threads, compressBlocks);
-
-    // Magic, version, header, then the offset table and the chunks in order.
     std::string file;
-    appendBytes(file, kExrMagic);
-    appendBytes(file, int32_t(kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0)));
-    {
-        Imf::StdOSStream os;
-        header.writeTo(os);
-        file += os.str();
-    }
-    uint64_t offset = uint64_t(file.size()) + 8 * uint64_t(blocks);
-    for (int b = 0; b < blocks; ++b) {
-        appendBytes(file, offset);
-        offset += 8 + packed[size_t(b)].size();
-    }
-    file.reserve(offset);
-    for (int b = 0; b < blocks; ++b) {
-        const std::vector<unsigned char>& chunk = packed[size_t(b)];
-        appendBytes(file, int32_t(dw.min.y + b * linesPerBlock));
-        appendBytes(file, int32_t(chunk.size()));
-        file.append(reinterpret_cast<const char*>(chunk.data()), chunk.size());
-    }
+    StringSink sink(file);
+    streamFile(header, lines, threads, sink);
     return file;
 }
 

@@ -17,7 +17,9 @@
 // streams of the same pixels; one machine always writes the same bytes.
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -38,16 +40,50 @@ constexpr int kExrDeflateLevel = 2;
 /// `out` holds n bytes and does not overlap `raw`.
 void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out);
 
-/// \brief The bytes of an OpenEXR file of `header` (ZIP_COMPRESSION or
-/// ZIPS_COMPRESSION, scan lines, one part) with the pixels of `frameBuffer`,
-/// compressing blocks on up to `threads` threads (0: all TBB may use). The
-/// caller writes them (writeFileAtomically).
+/// Where one channel's values come from for a run of lines: value x of line
+/// k (k = 0 for the run's first line) at base + x * xStride + k * yStride.
+struct ExrChannelSource {
+    const char* base = nullptr;  ///< null: zeros
+    size_t size = 0;             ///< bytes per value: 2 (HALF) or 4 (FLOAT, UINT)
+    ptrdiff_t xStride = 0;
+    ptrdiff_t yStride = 0;
+};
+
+/// The uncompressed bytes of `lines` lines in `raw`, as an EXR block holds
+/// them: per line, each channel's `width` values in the order of `sources`
+/// (the header's channel order).
+void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int lines,
+                    unsigned char* raw);
+
+/// Fills `raw` with the uncompressed bytes (gatherExrLines' layout) of the
+/// data window's lines [y0, y1). Called from several threads at once, each
+/// with its own block.
+using ExrBlockLines = std::function<void(int y0, int y1, unsigned char* raw)>;
+
+/// \brief Writes an OpenEXR file of `header` (ZIP_COMPRESSION or
+/// ZIPS_COMPRESSION, scan lines, one part) to `path` (created or truncated;
+/// the caller writes to a temporary, writeFileAtomically), its pixels from
+/// `lines`, compressing blocks on up to `threads` threads (0: all TBB may
+/// use).
+///
+/// Blocks stream through a TBB pipeline: each is gathered, pre-passed and
+/// deflated by one thread into buffers that thread reuses, and written as
+/// soon as the blocks before it are, so the memory it needs does not grow
+/// with the image (docs/benchmarks.md, "Fresh memory"). The offset table is
+/// written last, into the place kept for it after the header.
+/// \throws std::logic_error / Iex errors when the header is not one this
+///         writer handles, std::runtime_error when igzip fails or the file
+///         cannot be written.
+void writeExrZipFile(const std::string& path, const Imf::Header& header,
+                     const ExrBlockLines& lines, int threads);
+
+/// \brief The bytes writeExrZipFile writes, for pixels in `frameBuffer`.
 ///
 /// Every channel of the header needs a slice of its own pixel type in the
 /// frame buffer (a channel without one is written as zeros, like
 /// Imf::OutputFile does), and sampling 1x1.
-/// \throws std::logic_error / Iex errors when the header or a slice is not
-///         one this writer handles, std::runtime_error when igzip fails.
+/// \throws as writeExrZipFile, and std::logic_error for a slice of another
+///         type or sampling than its channel.
 std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
                              int threads);
 

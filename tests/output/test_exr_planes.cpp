@@ -1,8 +1,10 @@
-// prepareExrPlanes splits the EXR writer's per-pixel preparation over TBB
-// tasks: every plane must be the bytes a one-pixel-at-a-time reference gives
-// (the writer's former serial code, restated here), for 1, 2 and TBB's
-// default thread count, with NaN, Inf, out-of-half-range values, shared
-// object names and unnamed objects in the film.
+// prepareExrPlanes prepares the EXR writer's planes one range of pixels at a
+// time (a 16-line block, in the thread that compresses it), into buffers it
+// reuses: every plane must be the bytes a one-pixel-at-a-time reference gives
+// (the writer's former serial code, restated here) for any split of the
+// frame, with NaN, Inf, out-of-half-range values, shared object names and
+// unnamed objects in the film; exrMatteLayout's whole-film scan must not
+// depend on the thread count.
 
 #include <Imath/half.h>
 #include <doctest/doctest.h>
@@ -119,12 +121,41 @@ std::vector<std::string> makeNames() {
     return names;
 }
 
+/// Checks pixels [begin, end) of `p` (prepared for that range) against the
+/// reference; returns the number of wrong values.
+size_t wrongValues(const Film& film, const std::vector<std::string>& names, bool floatPixels,
+                   int ranks, size_t begin, size_t end, const ExrPlanes& p) {
+    size_t wrong = 0;
+    const auto expect = [&](bool ok) { wrong += !ok; };
+    expect(floatPixels ? p.rgbaH == nullptr : p.rgbaF == nullptr);
+    for (size_t i = begin; i < end; ++i) {
+        const size_t j = i - begin;
+        for (size_t c = 0; c < 4; ++c) {
+            if (floatPixels)
+                expect(sameBits(p.rgbaF[4 * j + c], floatReference(film.rgba[4 * i + c], false)));
+            else
+                expect(p.rgbaH[4 * j + c] == halfReference(film.rgba[4 * i + c]));
+        }
+        for (size_t c = 0; c < 3; ++c) {
+            expect(p.albedo[3 * j + c] == halfReference(film.albedo[3 * i + c]));
+            expect(sameBits(p.normal[3 * j + c], floatReference(film.normal[3 * i + c], false)));
+        }
+        expect(sameBits(p.z[j], floatReference(film.z[i], true)));
+        expect(sameBits(p.distance[j], floatReference(film.distance[i], true)));
+        expect(sameBits(p.objectId[j], floatReference(film.objectId[i], false)));
+        const std::vector<float> crypto = cryptoReference(film, i, names, ranks);
+        for (int k = 0; k < 2 * ranks; ++k)
+            expect(sameBits(p.crypto[j * size_t(2 * ranks) + size_t(k)], crypto[size_t(k)]));
+    }
+    return wrong;
+}
+
 void checkAgainstReference(const Film& film, const std::vector<std::string>& names,
                            bool floatPixels, int wanted, int threads) {
     CAPTURE(floatPixels);
     CAPTURE(wanted);
     CAPTURE(threads);
-    const ExrPlanes p = prepareExrPlanes(film, floatPixels, names, wanted, threads);
+    const ExrMatteLayout layout = exrMatteLayout(film, names, wanted, threads);
     const size_t n = size_t(film.width) * size_t(film.height);
 
     int used = 0, maxObject = -1;
@@ -138,37 +169,33 @@ void checkAgainstReference(const Film& film, const std::vector<std::string>& nam
         used = std::max(used, u);
     }
     const int ranks = (std::max(std::clamp(wanted, 1, kMatteRanks), used) + 1) / 2 * 2;
-    REQUIRE(p.matteRanks == ranks);
-    CHECK(p.maxMatteObject == maxObject);
+    REQUIRE(layout.ranks == ranks);
+    CHECK(layout.maxObject == maxObject);
+    REQUIRE(layout.idOf.size() == size_t(maxObject + 1));
 
-    size_t wrong = 0;
-    const auto expect = [&](bool ok) { wrong += !ok; };
-    for (size_t i = 0; i < n * 4; ++i) {
-        if (floatPixels)
-            expect(sameBits(p.rgbaF[i], floatReference(film.rgba[i], false)));
-        else
-            expect(p.rgbaH[i] == halfReference(film.rgba[i]));
+    // The whole frame at once, then one ExrPlanes reused for 16-line blocks,
+    // single lines and ranges that cut lines (a longer range first, so stale
+    // values of a reused buffer would show).
+    ExrPlanes whole;
+    prepareExrPlanes(film, 0, n, floatPixels, layout, whole);
+    CHECK(wrongValues(film, names, floatPixels, ranks, 0, n, whole) == 0);
+    const size_t w = size_t(film.width);
+    for (size_t step : {16 * w, w, size_t(7777)}) {
+        CAPTURE(step);
+        ExrPlanes reused;
+        size_t wrong = 0;
+        for (size_t begin = 0; begin < n; begin += step) {
+            const size_t end = std::min(n, begin + step);
+            prepareExrPlanes(film, begin, end, floatPixels, layout, reused);
+            wrong += wrongValues(film, names, floatPixels, ranks, begin, end, reused);
+        }
+        CHECK(wrong == 0);
     }
-    CHECK((floatPixels ? p.rgbaH.empty() : p.rgbaF == nullptr));
-    for (size_t i = 0; i < n * 3; ++i) {
-        expect(p.albedo[i] == halfReference(film.albedo[i]));
-        expect(sameBits(p.normal[i], floatReference(film.normal[i], false)));
-    }
-    for (size_t i = 0; i < n; ++i) {
-        expect(sameBits(p.z[i], floatReference(film.z[i], true)));
-        expect(sameBits(p.distance[i], floatReference(film.distance[i], true)));
-        expect(sameBits(p.objectId[i], floatReference(film.objectId[i], false)));
-        const std::vector<float> crypto = cryptoReference(film, i, names, ranks);
-        for (int k = 0; k < 2 * ranks; ++k)
-            expect(sameBits(p.crypto[i * size_t(2 * ranks) + size_t(k)], crypto[size_t(k)]));
-    }
-    CHECK(wrong == 0);
 }
 
 }  // namespace
 
-TEST_CASE(
-    "exr planes: every plane equals the one-pixel-at-a-time reference, for any thread count") {
+TEST_CASE("exr planes: every range's planes equal the one-pixel-at-a-time reference") {
     const Film film = makeFilm(20261202);
     const std::vector<std::string> names = makeNames();
     for (int threads : {1, 2, 0})
@@ -178,17 +205,20 @@ TEST_CASE(
 }
 
 TEST_CASE("exr planes: a rendered film's FLOAT layers are lent, not copied") {
-    Film film(256, 160);  // 40,960 pixels: several tasks
+    Film film(256, 160);  // 40,960 pixels
     for (size_t i = 0; i < film.z.size(); ++i) film.z[i] = float(i % 97);
-    const ExrPlanes p = prepareExrPlanes(film, true, {}, 2, 2);
-    CHECK(p.rgbaF == film.rgba.data());
-    CHECK(p.z == film.z.data());
-    CHECK(p.distance == film.distance.data());
-    CHECK(p.normal == film.normal.data());
-    CHECK(p.objectId == film.objectId.data());
-    CHECK(p.maxMatteObject == -1);  // the Film default: no coverage anywhere
-    CHECK(p.matteRanks == 2);
-    for (size_t i = 0; i < p.crypto.size(); ++i) REQUIRE(p.crypto[i] == 0.f);
+    const ExrMatteLayout layout = exrMatteLayout(film, {}, 2, 2);
+    CHECK(layout.maxObject == -1);  // the Film default: no coverage anywhere
+    CHECK(layout.ranks == 2);
+    ExrPlanes p;
+    const size_t begin = 16 * 256, end = 32 * 256;
+    prepareExrPlanes(film, begin, end, true, layout, p);
+    CHECK(p.rgbaF == film.rgba.data() + 4 * begin);
+    CHECK(p.z == film.z.data() + begin);
+    CHECK(p.distance == film.distance.data() + begin);
+    CHECK(p.normal == film.normal.data() + 3 * begin);
+    CHECK(p.objectId == film.objectId.data() + begin);
+    for (size_t i = 0; i < 2 * 2 * (end - begin); ++i) REQUIRE(p.crypto[i] == 0.f);
 }
 
 TEST_CASE("exr planes: a film without AOV planes gets the Film defaults in every plane") {
@@ -199,14 +229,16 @@ TEST_CASE("exr planes: a film without AOV planes gets the Film defaults in every
     film.albedo.clear();
     film.objectId.clear();
     film.mattes.clear();
-    const ExrPlanes p = prepareExrPlanes(film, false, {"x"}, 1, 2);
+    const ExrMatteLayout layout = exrMatteLayout(film, {"x"}, 1, 2);
+    CHECK(layout.ranks == 2);
+    CHECK(layout.maxObject == -1);
     const size_t n = 130 * 70;
+    ExrPlanes p;
+    prepareExrPlanes(film, 0, n, false, layout, p);
     size_t wrong = 0;
     for (size_t i = 0; i < n; ++i) {
         wrong += p.z[i] != kNoHitDepth || p.distance[i] != kNoHitDepth || p.objectId[i] != -1.f;
         wrong += p.normal[3 * i] != 0.f || p.albedo[3 * i] != 0 || p.crypto[2 * i] != 0.f;
     }
     CHECK(wrong == 0);
-    CHECK(p.matteRanks == 2);
-    CHECK(p.maxMatteObject == -1);
 }

@@ -4,11 +4,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -244,4 +246,79 @@ TEST_CASE("exr zip: other compressions and unwritable paths are refused") {
     CHECK_THROWS_AS(writeFileAtomically((dir.path() / "missing/folder/x.exr").string(),
                                         encodeExrZipFile(image.header, image.fb, 1)),
                     InputError);
+}
+
+TEST_CASE("exr zip: gatherExrLines lays out each line channel after channel, by hand") {
+    // Two lines of width 2: a HALF channel interleaved with another (stride 4
+    // bytes), a FLOAT channel packed, and a channel without values (zeros).
+    const uint16_t halves[8] = {0x1111, 0xaaaa, 0x2222, 0xbbbb, 0x3333, 0xcccc, 0x4444, 0xdddd};
+    const float floats[4] = {1.f, 2.f, 3.f, 4.f};
+    std::vector<ExrChannelSource> sources(3);
+    sources[0] = {reinterpret_cast<const char*>(halves), 2, 4, 8};
+    sources[1] = {reinterpret_cast<const char*>(floats), 4, 4, 8};
+    sources[2] = {nullptr, 2, 0, 0};
+    std::vector<unsigned char> raw(2 * (2 * 2 + 2 * 4 + 2 * 2), 0xee);
+    gatherExrLines(sources, 2, 2, raw.data());
+    std::vector<unsigned char> expected;
+    const auto append = [&](const void* p, size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        expected.insert(expected.end(), b, b + n);
+    };
+    for (int y = 0; y < 2; ++y) {
+        append(&halves[4 * y + 0], 2);
+        append(&halves[4 * y + 2], 2);
+        append(&floats[2 * y], 8);
+        const uint16_t zeros[2] = {0, 0};
+        append(zeros, 4);
+    }
+    CHECK(raw == expected);
+}
+
+TEST_CASE("exr zip: the streamed file is the bytes encodeExrZipFile returns, and errors are thrown") {
+    TempDir dir;
+    for (Imf::Compression compression : {Imf::ZIP_COMPRESSION, Imf::ZIPS_COMPRESSION}) {
+        CAPTURE(int(compression));
+        TestImage image(compression, false);
+        const std::string expected = encodeExrZipFile(image.header, image.fb, 2);
+        // The same pixels through writeExrZipFile's block callback.
+        std::vector<ExrChannelSource> sources;
+        const Imath::Box2i& dw = image.header.dataWindow();
+        for (auto it = image.header.channels().begin(); it != image.header.channels().end(); ++it) {
+            ExrChannelSource s;
+            s.size = it.channel().type == Imf::HALF ? 2 : 4;
+            if (const Imf::Slice* slice = image.fb.findSlice(it.name())) {
+                s.base = slice->base + ptrdiff_t(dw.min.x) * ptrdiff_t(slice->xStride);
+                s.xStride = ptrdiff_t(slice->xStride);
+                s.yStride = ptrdiff_t(slice->yStride);
+            }
+            sources.push_back(s);
+        }
+        std::atomic<int> calls{0};
+        const ExrBlockLines lines = [&](int y0, int y1, unsigned char* raw) {
+            ++calls;
+            std::vector<ExrChannelSource> block = sources;
+            for (ExrChannelSource& s : block)
+                if (s.base) s.base += ptrdiff_t(y0) * s.yStride;
+            gatherExrLines(block, TestImage::kW, y1 - y0, raw);
+        };
+        for (int threads : {1, 2, 0}) {
+            CAPTURE(threads);
+            calls = 0;
+            const std::string path = (dir.path() / "streamed.exr").string();
+            writeExrZipFile(path, image.header, lines, threads);
+            CHECK(readAll(path) == expected);
+            const int perBlock = compression == Imf::ZIP_COMPRESSION ? 16 : 1;
+            CHECK(calls == (TestImage::kH + perBlock - 1) / perBlock);  // each block once
+        }
+        CHECK_THROWS_AS(writeExrZipFile((dir.path() / "missing/x.exr").string(), image.header,
+                                        lines, 1),
+                        std::runtime_error);
+        // A block callback's exception reaches the caller.
+        const ExrBlockLines failing = [&](int y0, int, unsigned char*) {
+            if (y0 > dw.min.y + 16) throw std::runtime_error("block failed");
+        };
+        CHECK_THROWS_WITH_AS(writeExrZipFile((dir.path() / "failing.exr").string(), image.header,
+                                             failing, 2),
+                             "block failed", std::runtime_error);
+    }
 }
