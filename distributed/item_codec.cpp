@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "renderer/matte_coverage.h"
+
 namespace raylab {
 
 namespace {
@@ -13,8 +15,11 @@ namespace {
 // Per pixel: the first-hit AOV layers: z (1) + distance (1) + normal (3) +
 // albedo (3) + objectId (1) floats.
 constexpr size_t kAovBytes = 9 * sizeof(float);
-// A tile's pixel: rgba (4 floats), the AOV layers and the Cryptomatte ranks.
-constexpr size_t kPixelBytes = 4 * sizeof(float) + kAovBytes + kMatteRanks * sizeof(MatteEntry);
+// A tile's pixel: rgba (4 floats), the AOV layers and the film's Cryptomatte
+// ranks (matteRanksOfSampling, as every rank's film has them).
+size_t pixelBytes(int matteRanks) {
+    return 4 * sizeof(float) + kAovBytes + size_t(matteRanks) * sizeof(MatteEntry);
+}
 // Per corner: colour (3 doubles), hit (1 byte), object id (int32: the root
 // derives the pixels' Cryptomatte coverage from the corners, as it does their
 // colour). An SPD item (corner row y) also carries the AOV layers of pixel
@@ -44,13 +49,13 @@ private:
 }  // namespace
 
 ItemCodec::ItemCodec(const FrameRenderer& frame, const RenderOptions& options)
-    : m_frame(frame), m_spd(options.spd),
+    : m_frame(frame), m_spd(options.spd), m_matteRanks(matteRanksOfSampling(options)),
       m_window(cropPixels(options.crop, options.width, options.height)) {}
 
 size_t ItemCodec::payloadBytes(int item) const {
     const WorkRegion r = m_frame.region(item);
     const size_t n = size_t(r.x1 - r.x0) * size_t(r.y1 - r.y0);
-    if (!m_spd) return n * kPixelBytes;
+    if (!m_spd) return n * pixelBytes(m_matteRanks);
     return n * kCornerBytes + size_t(aovPixels(r)) * kAovBytes;
 }
 
@@ -95,7 +100,7 @@ void ItemCodec::append(int item, const FrameBuffers& from, std::vector<unsigned 
             const size_t i = f.index(x, y);
             w.putBytes(&f.rgba[4 * i], 4 * sizeof(float));
             putAovs(i);
-            w.putBytes(&f.mattes[i * kMatteRanks], kMatteRanks * sizeof(MatteEntry));
+            w.putBytes(f.mattesOf(i), size_t(m_matteRanks) * sizeof(MatteEntry));
         }
     }
     assert(w.position() == out.data() + out.size());
@@ -137,7 +142,7 @@ void ItemCodec::extract(ByteReader& in, FrameBuffers& to, std::vector<int>& item
                     const size_t i = f.index(x, y);
                     in.getBytes(&f.rgba[4 * i], 4 * sizeof(float));
                     getAovs(i);
-                    in.getBytes(&f.mattes[i * kMatteRanks], kMatteRanks * sizeof(MatteEntry));
+                    in.getBytes(f.mattesOf(i), size_t(m_matteRanks) * sizeof(MatteEntry));
                 }
             }
         }

@@ -37,6 +37,7 @@ private:
 
     const FrameRenderer& m_frame;
     bool m_spd;
+    int m_matteRanks;  ///< Film::matteRanks of every rank's film
     PixelWindow m_window;  ///< the pixels of the frame (the crop window, or the whole image)
 };
 

@@ -47,17 +47,27 @@ struct Film {
     FilmPlane normal;    ///< 3 floats per pixel: world shading normal of the first hit
     FilmPlane albedo;    ///< 3 floats per pixel: diffuse reflectance of the first hit
     FilmPlane objectId;  ///< index of the first object hit, -1 for background
-    /// kMatteRanks entries per pixel, by decreasing coverage (ties: lower
+    /// `matteRanks` entries per pixel, by decreasing coverage (ties: lower
     /// object index first); from every sample of the pixel.
     std::vector<MatteEntry, HugePageAllocator<MatteEntry>> mattes;
+    /// Entries per pixel in `mattes`, 1..kMatteRanks: the most objects one
+    /// pixel's samples can see (matteRanksOfSampling), so a 1-sample render
+    /// keeps 8 bytes per pixel and an SPD render 32 instead of 48 (fresh
+    /// memory costs ~1.2-3 ms per MB on this project's VMs, docs/benchmarks.md).
+    int matteRanks = kMatteRanks;
 
     Film() = default;
     Film(int w, int h) : Film(w, h, 0, 0, w, h) {}
     /// The w × h window at (x0, y0) of a fullW × fullH image, every plane at
-    /// its blank value (above). The ~100 bytes per pixel are written by TBB
+    /// its blank value (above). The 60-100 bytes per pixel are written by TBB
     /// tasks, a plane each (film.cpp): a frame's first touch of its film is
     /// not one core's serial pass before the render.
-    Film(int w, int h, int x0, int y0, int fullW, int fullH);
+    /// `ranks`: matteRanks (clamped to 1..kMatteRanks).
+    Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks = kMatteRanks);
+
+    /// Pixel i's first entry of `matteRanks`.
+    MatteEntry* mattesOf(size_t i) { return mattes.data() + i * size_t(matteRanks); }
+    const MatteEntry* mattesOf(size_t i) const { return mattes.data() + i * size_t(matteRanks); }
 
     /// Full-image size (a film filled in by hand may leave it 0: then its own).
     int displayWidth() const { return fullWidth > 0 ? fullWidth : width; }

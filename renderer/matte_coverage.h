@@ -26,6 +26,12 @@ inline int matteRanksOfSampling(const RenderOptions& options) {
     return std::clamp(samples, 1, kMatteRanks);
 }
 
+/// A pixel's `count` entries of Film::mattes (Film::matteRanks of them).
+struct MatteSpan {
+    MatteEntry* out;
+    size_t count;
+};
+
 class MatteCoverage {
 public:
     /// Adds `weight` (a fraction of the pixel) to `object`; a miss (object < 0) adds nothing.
@@ -45,14 +51,17 @@ public:
         else m_spill.push_back({object, weight});
     }
 
-    /// Writes kMatteRanks entries to `out`: coverage = weight / divisor, the
-    /// largest first (ties: lower object index first), unused ranks {-1, 0}.
-    void store(MatteEntry* out, double divisor = 1.0) const {
+    /// Writes out.count entries: coverage = weight / divisor, the largest
+    /// first (ties: lower object index first), unused ranks {-1, 0}; objects
+    /// beyond out.count ranks are dropped (none when the count is
+    /// matteRanksOfSampling's).
+    void store(MatteSpan span, double divisor = 1.0) const {
+        MatteEntry* out = span.out;
         const auto before = [](const Entry& a, const Entry& b) {
             return a.weight != b.weight ? a.weight > b.weight : a.object < b.object;
         };
         const auto write = [&](const Entry* sorted, size_t n) {
-            for (size_t r = 0; r < size_t(kMatteRanks); ++r)
+            for (size_t r = 0; r < span.count; ++r)
                 out[r] = r < n ? MatteEntry{sorted[r].object, float(sorted[r].weight / divisor)}
                                : MatteEntry{};
         };
@@ -61,9 +70,9 @@ public:
             // bit the general path's output; 60% of finishRow's instructions
             // on balls --spd went to the copy and sort below.)
             if (m_count == 1)
-                storeSingle(out, m_inline[0].object, float(m_inline[0].weight / divisor));
+                storeSingle(span, m_inline[0].object, float(m_inline[0].weight / divisor));
             else
-                storeSingle(out, -1, 0.f);
+                storeSingle(span, -1, 0.f);
             return;
         }
         if (m_spill.empty()) {  // no allocation on the common path
@@ -85,9 +94,9 @@ public:
     /// What store() writes for a pixel whose coverage is all `object`'s
     /// (`coverage` of it; object < 0: no object): without gathering one,
     /// for callers that know it already (an SPD pixel with four equal corners).
-    static void storeSingle(MatteEntry* out, int object, float coverage) {
-        out[0] = object >= 0 ? MatteEntry{object, coverage} : MatteEntry{};
-        for (size_t r = 1; r < size_t(kMatteRanks); ++r) out[r] = MatteEntry{};
+    static void storeSingle(MatteSpan span, int object, float coverage) {
+        span.out[0] = object >= 0 ? MatteEntry{object, coverage} : MatteEntry{};
+        for (size_t r = 1; r < span.count; ++r) span.out[r] = MatteEntry{};
     }
 
 private:

@@ -194,7 +194,7 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
         if (k == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
         if (opt.wantAovs) mattes.add(int(s.first.objectId), 1.0);
     }
-    if (opt.wantAovs) mattes.store(&film.mattes[i * kMatteRanks], double(n));
+    if (opt.wantAovs) mattes.store({film.mattesOf(i), size_t(film.matteRanks)}, double(n));
     storePixel(film, i, sum / double(n), double(hits) / n, opt.alpha);
 }
 
@@ -238,7 +238,7 @@ int FrameRenderer::workItemCount() const {
 FrameBuffers FrameRenderer::makeBuffers() const {
     FrameBuffers b;
     b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
-                  m_options.height);
+                  m_options.height, matteRanksOfSampling(m_options));
     if (m_options.spd) {
         b.cornerX0 = m_window.x0;
         b.cornerY0 = m_window.y0;
@@ -291,7 +291,8 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
                     adaptive.pixel(x, y, coverage, first, m_options.wantAovs ? &mattes : nullptr);
                 const size_t i = buffers.film.index(x, y);
                 if (first.hit && m_options.wantAovs) storeFirstHit(buffers.film, i, first);
-                if (m_options.wantAovs) mattes.store(&buffers.film.mattes[i * kMatteRanks]);
+                if (m_options.wantAovs)
+                    mattes.store({buffers.film.mattesOf(i), size_t(buffers.film.matteRanks)});
                 storePixel(buffers.film, i, c, coverage, m_options.alpha);
             }
         }
@@ -312,7 +313,7 @@ void FrameRenderer::finishRow(FrameBuffers& buffers, int y) const {
         const CornerSample &a = top[k], &b = top[k + 1], &c = bottom[k], &d = bottom[k + 1];
         const size_t i = film.index(x, y);
         if (m_options.wantAovs) {
-            MatteEntry* out = &film.mattes[i * kMatteRanks];
+            const MatteSpan out{film.mattesOf(i), size_t(film.matteRanks)};
             if (a.objectId == b.objectId && a.objectId == c.objectId && a.objectId == d.objectId) {
                 // Inside one object (or the background), as most pixels are:
                 // four corners of 0.25 sum to exactly 1.

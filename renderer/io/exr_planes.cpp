@@ -69,14 +69,15 @@ struct MatteExtent {
 };
 
 MatteExtent matteExtent(const Film& film) {
-    const size_t pixels = film.mattes.size() / kMatteRanks;
+    const size_t ranks = size_t(film.matteRanks);
+    const size_t pixels = film.mattes.size() / ranks;
     return tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, pixels, 8192), MatteExtent{},
         [&](const tbb::blocked_range<size_t>& r, MatteExtent e) {
             for (size_t i = r.begin(); i != r.end(); ++i) {
                 int used = 0;
-                for (int k = 0; k < kMatteRanks; ++k) {
-                    const MatteEntry& m = film.mattes[i * kMatteRanks + size_t(k)];
+                for (size_t k = 0; k < ranks; ++k) {
+                    const MatteEntry& m = film.mattes[i * ranks + k];
                     used += m.object >= 0 && m.coverage > 0;
                     e.maxObject = std::max(e.maxObject, int(m.object));
                 }
@@ -110,8 +111,9 @@ const float* cryptomattePlane(const Film& film, size_t begin, size_t end,
     for (size_t i = begin; i < end; ++i) {
         Rank merged[kMatteRanks];
         size_t count = 0;
-        for (int r = 0; r < kMatteRanks; ++r) {
-            const MatteEntry& e = film.mattes[i * kMatteRanks + size_t(r)];
+        const MatteEntry* entries = film.mattesOf(i);
+        for (int r = 0; r < film.matteRanks; ++r) {  // <= kMatteRanks (writeExr checks)
+            const MatteEntry& e = entries[r];
             if (e.object < 0 || !(e.coverage > 0)) continue;
             const float value = layout.idOf[size_t(e.object)];
             size_t k = 0;

@@ -129,7 +129,12 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     checkLayerSize(path, "normal", film.normal.size(), n * 3);
     checkLayerSize(path, "albedo", film.albedo.size(), n * 3);
     checkLayerSize(path, "objectId", film.objectId.size(), n);
-    checkLayerSize(path, "mattes", film.mattes.size(), n * kMatteRanks);
+    if (film.matteRanks < 1 || film.matteRanks > kMatteRanks)
+        throw InputError(path, 0,
+                         "cannot write EXR: film has " + std::to_string(film.matteRanks) +
+                             " Cryptomatte ranks per pixel, expected 1 to " +
+                             std::to_string(kMatteRanks));
+    checkLayerSize(path, "mattes", film.mattes.size(), n * size_t(film.matteRanks));
 
     // The Cryptomatte layout needs the whole film (how many ranks, which
     // objects) before the header can be written; the planes are prepared

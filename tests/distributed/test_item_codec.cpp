@@ -48,9 +48,10 @@ bool pixelEqual(const Film& a, const Film& b, int x, int y) {
         if (bitsOf(a.normal[3 * i + c]) != bitsOf(b.normal[3 * i + c]) ||
             bitsOf(a.albedo[3 * i + c]) != bitsOf(b.albedo[3 * i + c]))
             return false;
-    for (int r = 0; r < kMatteRanks; ++r) {
-        const MatteEntry& ma = a.mattes[i * kMatteRanks + size_t(r)];
-        const MatteEntry& mb = b.mattes[i * kMatteRanks + size_t(r)];
+    if (a.matteRanks != b.matteRanks) return false;
+    for (int r = 0; r < a.matteRanks; ++r) {
+        const MatteEntry& ma = a.mattesOf(i)[r];
+        const MatteEntry& mb = b.mattesOf(i)[r];
         if (ma.object != mb.object || bitsOf(ma.coverage) != bitsOf(mb.coverage)) return false;
     }
     return bitsOf(a.z[i]) == bitsOf(b.z[i]) && bitsOf(a.distance[i]) == bitsOf(b.distance[i]) &&
@@ -73,11 +74,13 @@ TEST_CASE("ItemCodec: tiles travel bit for bit, other pixels stay untouched") {
     // 40x20 pixels in 16x16 tiles: 3 columns (16, 16, 8 wide) x 2 rows (16, 4 high).
     REQUIRE(frame.workItemCount() == 6);
     const ItemCodec codec(frame, p->options);
-    // Item 2: x 32..39, y 0..15 = 128 pixels of 13 floats and 6 Cryptomatte
-    // ranks of 8 bytes (52 + 48 = 100 bytes) + the item number.
-    CHECK(codec.itemBytes(2) == 4 + 128 * 100);
+    // Item 2: x 32..39, y 0..15 = 128 pixels of 13 floats and, at the
+    // scene's 4 samples per pixel, 4 Cryptomatte ranks of 8 bytes (52 + 32 =
+    // 84 bytes) + the item number.
+    REQUIRE(p->options.spp == 4);
+    CHECK(codec.itemBytes(2) == 4 + 128 * 84);
     // Item 5: x 32..39, y 16..19 = 32 pixels.
-    CHECK(codec.itemBytes(5) == 4 + 32 * 100);
+    CHECK(codec.itemBytes(5) == 4 + 32 * 84);
 
     FrameBuffers from = frame.makeBuffers();
     fillDistinct(from.film);
@@ -160,9 +163,10 @@ TEST_CASE("ItemCodec: SPD corner rows and their pixel row's AOV layers travel bi
             REQUIRE(bitsOf(to.film.objectId[i]) == bitsOf(aovs.objectId[i]));
             for (int c = 0; c < 4; ++c)
                 REQUIRE(bitsOf(to.film.rgba[4 * i + c]) == bitsOf(untouched.film.rgba[4 * i + c]));
-            for (int r = 0; r < kMatteRanks; ++r) {
-                const MatteEntry& got = to.film.mattes[i * kMatteRanks + size_t(r)];
-                const MatteEntry& was = untouched.film.mattes[i * kMatteRanks + size_t(r)];
+            REQUIRE(to.film.matteRanks == untouched.film.matteRanks);
+            for (int r = 0; r < to.film.matteRanks; ++r) {
+                const MatteEntry& got = to.film.mattesOf(i)[r];
+                const MatteEntry& was = untouched.film.mattesOf(i)[r];
                 REQUIRE(got.object == was.object);
                 REQUIRE(bitsOf(got.coverage) == bitsOf(was.coverage));
             }

@@ -43,7 +43,7 @@ TEST_CASE("frame buffers: Film's constructor gives every plane its blank value")
         CHECK(allBlank(got.normal, n * 3, 0.f));
         CHECK(allBlank(got.albedo, n * 3, 0.f));
         CHECK(allBlank(got.objectId, n, -1.f));
-        CHECK(allBlank(got.mattes, n * kMatteRanks, MatteEntry{-1, 0.f}));
+        CHECK(allBlank(got.mattes, n * size_t(got.matteRanks), MatteEntry{-1, 0.f}));
     }
 }
 

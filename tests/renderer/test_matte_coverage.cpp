@@ -16,7 +16,7 @@ namespace {
 std::array<MatteEntry, kMatteRanks> stored(const MatteCoverage& m, double divisor = 1.0) {
     std::array<MatteEntry, kMatteRanks> out;
     for (MatteEntry& e : out) e = MatteEntry{7, 7.f};  // overwritten, every rank
-    m.store(out.data(), divisor);
+    m.store({out.data(), out.size()}, divisor);
     return out;
 }
 
@@ -85,7 +85,7 @@ TEST_CASE("MatteCoverage::storeSingle writes what store() gives for one object o
     for (int k = 0; k < 4; ++k) four.add(5, 0.25);
     std::array<MatteEntry, kMatteRanks> direct;
     for (MatteEntry& e : direct) e = MatteEntry{7, 7.f};
-    MatteCoverage::storeSingle(direct.data(), 5, 1.0f);
+    MatteCoverage::storeSingle({direct.data(), direct.size()}, 5, 1.0f);
     const auto gathered = stored(four);
     for (int r = 0; r < kMatteRanks; ++r) {
         CAPTURE(r);
@@ -98,7 +98,45 @@ TEST_CASE("MatteCoverage::storeSingle writes what store() gives for one object o
     // Four background corners: no object at all.
     MatteCoverage none;
     for (int k = 0; k < 4; ++k) none.add(-1, 0.25);
-    MatteCoverage::storeSingle(direct.data(), -1, 1.0f);
+    MatteCoverage::storeSingle({direct.data(), direct.size()}, -1, 1.0f);
     checkUnused(direct, 0);
     checkUnused(stored(none), 0);
+}
+
+TEST_CASE("MatteCoverage: a film's shorter rank stride gets exactly its entries") {
+    // Film::matteRanks = 4 (an SPD film): store and storeSingle write four
+    // entries and nothing beyond them; the four largest coverages are kept.
+    MatteCoverage m;
+    for (int object = 0; object < 5; ++object) m.add(object, double(object + 1));
+    std::array<MatteEntry, 6> out;
+    for (MatteEntry& e : out) e = MatteEntry{99, 9.f};
+    m.store({out.data(), 4}, 15.0);  // 1 + 2 + 3 + 4 + 5
+    for (int r = 0; r < 4; ++r) {
+        CAPTURE(r);
+        CHECK(out[r].object == 4 - r);
+        CHECK(out[r].coverage == float(double(5 - r) / 15.0));
+    }
+    CHECK(out[4].object == 99);
+    CHECK(out[5].object == 99);
+    MatteCoverage::storeSingle({out.data(), 2}, 3, 0.5f);
+    CHECK(out[0].object == 3);
+    CHECK(out[0].coverage == 0.5f);
+    CHECK(out[1].object == -1);
+    CHECK(out[2].object == 2);  // beyond the span: untouched
+}
+
+TEST_CASE("matteRanksOfSampling: the most objects one pixel's samples can see") {
+    RenderOptions o;
+    o.spp = 1;
+    CHECK(matteRanksOfSampling(o) == 1);
+    o.spp = 3;
+    CHECK(matteRanksOfSampling(o) == 3);
+    o.spp = 64;
+    CHECK(matteRanksOfSampling(o) == kMatteRanks);
+    o.spp = 1;
+    o.spd = true;
+    CHECK(matteRanksOfSampling(o) == 4);  // the four corners
+    o.spd = false;
+    o.adaptiveThreshold = 0.1;
+    CHECK(matteRanksOfSampling(o) == kMatteRanks);
 }
