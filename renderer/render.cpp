@@ -4,6 +4,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -13,6 +14,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -29,6 +31,12 @@ namespace raylab {
 namespace {
 
 constexpr int kTileSize = 16;
+/// SPD corner rows render() keeps (a ring: FrameBuffers): 64 rows of a
+/// 512-wide frame are 1 MB, and let a thread run 60 rows ahead of another
+/// before it waits.
+constexpr int kCornerRingRows = 64;
+/// cornerRowsDone's value once a pixel row has been averaged.
+constexpr int kRowFinished = 3;
 
 /// No NaN or Inf may ever reach a pixel. The integrator saturates overflows
 /// (shading/radiance_range.h), so a non-finite sample is a defect: counted,
@@ -235,7 +243,7 @@ int FrameRenderer::workItemCount() const {
     return m_options.spd ? m_window.height() + 1 : m_tilesX * m_tilesY;
 }
 
-FrameBuffers FrameRenderer::makeBuffers() const {
+FrameBuffers FrameRenderer::makeBuffers(int cornerRing) const {
     FrameBuffers b;
     b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
                   m_options.height, matteRanksOfSampling(m_options));
@@ -243,8 +251,9 @@ FrameBuffers FrameRenderer::makeBuffers() const {
         b.cornerX0 = m_window.x0;
         b.cornerY0 = m_window.y0;
         b.cornerStride = m_window.width() + 1;
-        b.corners = HugeArray<CornerSample>(size_t(m_window.width() + 1) *
-                                            size_t(m_window.height() + 1));
+        b.cornerRows = cornerRing > 0 ? std::min(cornerRing, m_window.height() + 1)
+                                      : m_window.height() + 1;
+        b.corners = HugeArray<CornerSample>(size_t(b.cornerStride) * size_t(b.cornerRows));
     }
     return b;
 }
@@ -343,7 +352,10 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
             tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
     const FrameRenderer frame(scene, accel, options, effects);
-    FrameBuffers buffers = frame.makeBuffers();
+    // SPD: corner rows live in a ring (FrameBuffers), the frame's 8 MB corner
+    // grid cut to ~1 MB of fresh memory, which costs ~1.2-3 ms per MB on this
+    // project's VMs (docs/benchmarks.md, "Fresh memory").
+    FrameBuffers buffers = frame.makeBuffers(kCornerRingRows);
     const int items = frame.workItemCount();
     tbb::enumerable_thread_specific<WorkCounters> counters;
     std::atomic<int> done{0};
@@ -352,25 +364,55 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
     // SPD mode: pixel row y is averaged as soon as corner rows y and y + 1
     // are both done, by the thread that finished the second one (while the
     // corners are still in its cache), instead of in a serial pass at the end.
-    // Item k is corner row y0 + k of the (crop) window; counted per film row.
+    // Item k is corner row y0 + k of the (crop) window; counted per film row,
+    // and set to kRowFinished once the row is averaged.
     const int pixelRows = options.spd ? buffers.film.height : 0;
     const int rowY0 = buffers.film.originY;
     std::unique_ptr<std::atomic<int>[]> cornerRowsDone(new std::atomic<int>[size_t(pixelRows)]);
     for (int y = 0; y < pixelRows; ++y) cornerRowsDone[y] = 0;
+    const auto stopped = [&] {
+        return (cancel && cancel->load(std::memory_order_relaxed)) || cancelRequested();
+    };
+    // Corner row k takes the ring place of row k - cornerRows, which pixel
+    // rows k - cornerRows - 1 and k - cornerRows average: both must be done.
+    // Rows are taken in order, so this waits only on rows other threads
+    // hold (the oldest row in flight never waits), and with 64 rows of slack
+    // it hardly ever waits at all. Nothing an item runs may use TBB: a
+    // nested wait could start another loop below on this thread, which could
+    // then spin on a row the suspended one holds.
+    const auto placeFree = [&](int k) {
+        const int old = k - buffers.cornerRows;
+        for (int y = old - 1; y <= old; ++y)
+            if (y >= 0 && y < pixelRows &&
+                cornerRowsDone[y].load(std::memory_order_acquire) != kRowFinished)
+                return false;
+        return true;
+    };
 
     RenderResult result;
     const auto start = std::chrono::steady_clock::now();
+    // Items in order from one counter, whichever thread asks (the ring needs
+    // it; for tiles it is TBB's order as good as any): one loop per thread.
+    std::atomic<int> nextItem{0};
+    const int loops = std::max(1, tbb::this_task_arena::max_concurrency());
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, items, 1),
-        [&](const tbb::blocked_range<int>& range) {
+        0, loops,
+        [&](int) {
             WorkCounters& local = counters.local();
-            for (int item = range.begin(); item != range.end(); ++item) {
+            for (int item = nextItem++; item < items; item = nextItem++) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
+                if (options.spd)
+                    while (!placeFree(item)) {
+                        if (stopped()) return;
+                        std::this_thread::yield();
+                    }
                 frame.renderWorkItem(item, buffers, local);
                 // Corner row y0 + item borders film rows item - 1 and item.
                 for (int y = item - 1; y <= item; ++y)
-                    if (y >= 0 && y < pixelRows && ++cornerRowsDone[y] == 2)
+                    if (y >= 0 && y < pixelRows && ++cornerRowsDone[y] == 2) {
                         frame.finishRow(buffers, rowY0 + y);
+                        cornerRowsDone[y].store(kRowFinished, std::memory_order_release);
+                    }
                 const int n = ++done;
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progressMutex);

@@ -52,8 +52,11 @@ struct WorkCounters {
     WorkCounters& operator+=(const WorkCounters& o);
 };
 
-/// Where a frame is assembled: the film, plus the (W+1)·(H+1) corner samples
-/// of the SPD procedure (of the crop window's pixels in a crop render).
+/// Where a frame is assembled: the film, plus the corner samples of the SPD
+/// procedure (of the crop window's pixels in a crop render): all (W+1)·(H+1)
+/// of them, or a ring of `cornerRows` rows that corner row y shares with rows
+/// y ± cornerRows (render(), which takes rows in order and reuses a row's
+/// place once both pixel rows that average it are done).
 struct FrameBuffers {
     Film film;
     /// Zero bytes until the render writes them: no serial pass over its
@@ -62,13 +65,15 @@ struct FrameBuffers {
     HugeArray<CornerSample> corners;
     int cornerX0 = 0, cornerY0 = 0;  ///< full-image corner at corners[0]
     int cornerStride = 0;            ///< corners per row
+    int cornerRows = 0;              ///< rows held (H+1: the whole grid)
 
     /// Corner (x, y) of the full image's corner grid.
-    CornerSample& corner(int x, int y) {
-        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
-    }
-    const CornerSample& corner(int x, int y) const {
-        return corners[size_t(y - cornerY0) * size_t(cornerStride) + size_t(x - cornerX0)];
+    CornerSample& corner(int x, int y) { return corners[cornerIndex(x, y)]; }
+    const CornerSample& corner(int x, int y) const { return corners[cornerIndex(x, y)]; }
+
+private:
+    size_t cornerIndex(int x, int y) const {
+        return size_t((y - cornerY0) % cornerRows) * size_t(cornerStride) + size_t(x - cornerX0);
     }
 };
 
@@ -92,7 +97,10 @@ public:
 
     int workItemCount() const;
     WorkRegion region(int item) const;
-    FrameBuffers makeBuffers() const;
+    /// The film and, in SPD mode, the corner grid: every row, or (cornerRing
+    /// > 0) a ring of that many rows for a caller that renders the rows in
+    /// order (FrameBuffers).
+    FrameBuffers makeBuffers(int cornerRing = 0) const;
     /// Renders one item into `buffers` (thread-safe for distinct items). In
     /// SPD mode an item is corner row y (of the window): the film's AOV layers of pixel row y
     /// are written too (from each pixel's top-left corner), its RGBA only by
