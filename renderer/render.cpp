@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -370,8 +371,12 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
     const int rowY0 = buffers.film.originY;
     std::unique_ptr<std::atomic<int>[]> cornerRowsDone(new std::atomic<int>[size_t(pixelRows)]);
     for (int y = 0; y < pixelRows; ++y) cornerRowsDone[y] = 0;
+    // Also when another item threw: TBB then cancels the loop, but a body
+    // waiting for a row the thrower never finished would spin forever and
+    // the exception would never reach the caller.
     const auto stopped = [&] {
-        return (cancel && cancel->load(std::memory_order_relaxed)) || cancelRequested();
+        return (cancel && cancel->load(std::memory_order_relaxed)) || cancelRequested() ||
+               tbb::is_current_task_group_canceling();
     };
     // Corner row k takes the ring place of row k - cornerRows, which pixel
     // rows k - cornerRows - 1 and k - cornerRows average: both must be done.
@@ -401,6 +406,7 @@ RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOp
             WorkCounters& local = counters.local();
             for (int item = nextItem++; item < items; item = nextItem++) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
+                if (tbb::is_current_task_group_canceling()) return;  // another item threw
                 if (options.spd)
                     while (!placeFree(item)) {
                         if (stopped()) return;

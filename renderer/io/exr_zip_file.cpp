@@ -58,10 +58,13 @@ struct Deflater {
     /// Makes room for blocks of up to `blockBytes` (the first call sizes it).
     void reserve(size_t blockBytes) {
         if (raw) return;
-        memory = HugeArray<unsigned char>(2 * blockBytes + kLevelBufferSize);
+        // Each part 64-byte aligned: igzip's level buffer holds pointers and
+        // 64-bit fields (a ZIPS line of an odd width is 4-byte aligned).
+        const size_t part = (blockBytes + 63) & ~size_t(63);
+        memory = HugeArray<unsigned char>(2 * part + kLevelBufferSize);
         raw = memory.data();
-        prepassed = raw + blockBytes;
-        levelBuffer = prepassed + blockBytes;
+        prepassed = raw + part;
+        levelBuffer = prepassed + part;
     }
 
     /// The zlib stream of in[0, n) in `out` (capacity n - 1), or 0 when it

@@ -6,7 +6,13 @@
 
 #include <doctest/doctest.h>
 
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
 #include <string>
+#include <thread>
 
 #include "distributed/distributed_test_helpers.h"
 
@@ -26,6 +32,37 @@ Film wholeGridFilm(const test::PreparedScene& p) {
     frame.finish(buffers);
     return std::move(buffers.film);
 }
+
+/// The scene's accelerator, except that its n-th intersect query throws
+/// (an allocation failure deep inside a work item).
+class ThrowingAccelerator final : public Accelerator {
+public:
+    ThrowingAccelerator(const Accelerator& inner, long n) : m_inner(inner), m_throwAt(n) {}
+    std::optional<Hit> intersect(const Ray& r, double a, double b) const override {
+        if (++m_calls == m_throwAt) throw std::bad_alloc();
+        return m_inner.intersect(r, a, b);
+    }
+    bool occluded(const Ray& r, double a, double b) const override {
+        return m_inner.occluded(r, a, b);
+    }
+    bool occluded(const Ray& r, double a, double b, OcclusionHint& h) const override {
+        return m_inner.occluded(r, a, b, h);
+    }
+    Color transmittance(const Ray& r, double a, double b) const override {
+        return m_inner.transmittance(r, a, b);
+    }
+    Color transmittance(const Ray& r, double a, double b, OcclusionHint& h) const override {
+        return m_inner.transmittance(r, a, b, h);
+    }
+    std::string name() const override { return m_inner.name(); }
+    double buildSeconds() const override { return 0; }
+    FilterCounts filterCounts() const override { return m_inner.filterCounts(); }
+
+private:
+    const Accelerator& m_inner;
+    mutable std::atomic<long> m_calls{0};
+    long m_throwAt;
+};
 
 }  // namespace
 
@@ -48,4 +85,35 @@ TEST_CASE("render: the SPD corner-row ring gives the whole grid's film, any thre
             CHECK(test::filmDifference(r.film, expected) == "");
         }
     }
+}
+
+TEST_CASE("render: an exception inside an SPD work item reaches the caller, never a hang") {
+    // The throwing row's pixel rows are never finished, so the row 64 later
+    // could wait for its ring place forever (review of 23678f2 reproduced it
+    // at 2 threads); it must see the loop's cancellation and let the
+    // exception out. A watchdog ends the process rather than hang ctest.
+    std::atomic<bool> finished{false};
+    std::thread watchdog([&] {
+        for (int i = 0; i < 600 && !finished; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (!finished) {
+            std::fprintf(stderr, "render did not return 30 s after a work item threw\n");
+            std::_Exit(3);
+        }
+    });
+    for (int threads : {1, 2, 3})
+        for (long row : {20L, 150L}) {
+            CAPTURE(threads);
+            CAPTURE(row);
+            RenderOverrides o;
+            o.spd = true;
+            auto p = test::prepare(std::string(RAYLAB_SOURCE_DIR) + "/scenes/primitives.json", o);
+            p->options.width = 48;
+            p->options.height = 300;
+            p->options.threads = threads;
+            const ThrowingAccelerator accel(*p->accel, 48 * row);
+            CHECK_THROWS_AS(render(p->scene, accel, p->options, p->effects), std::bad_alloc);
+        }
+    finished = true;
+    watchdog.join();
 }
