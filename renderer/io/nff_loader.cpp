@@ -34,6 +34,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -168,6 +169,11 @@ class NffReader {
 public:
     NffReader(std::string_view text, const std::string& path) : m_tok(text), m_path(path) {
         checkEncoding(text);
+        // Every object starts a line of its own: the line count bounds the
+        // objects, so the vector never reallocates (SPD gears: 9,345 objects
+        // of 80 bytes, 14 reallocations moving them and faulting in each new
+        // buffer). Reserved, not touched: the unused tail costs no page.
+        m_objects.reserve(size_t(std::count(text.begin(), text.end(), '\n')) + 1);
     }
 
     Scene read() {
