@@ -169,11 +169,14 @@ class NffReader {
 public:
     NffReader(std::string_view text, const std::string& path) : m_tok(text), m_path(path) {
         checkEncoding(text);
-        // Every object starts a line of its own: the line count bounds the
-        // objects, so the vector never reallocates (SPD gears: 9,345 objects
-        // of 80 bytes, 14 reallocations moving them and faulting in each new
-        // buffer). Reserved, not touched: the unused tail costs no page.
-        m_objects.reserve(size_t(std::count(text.begin(), text.end(), '\n')) + 1);
+        // Every object starts a line of its own and takes at least 9 bytes
+        // ("s 0 0 0 1"): both bound the objects, so the vector need not
+        // reallocate (SPD gears: 9,345 objects of 80 bytes, 14 reallocations
+        // moving them and faulting in each new buffer). Reserved, not touched:
+        // the unused tail costs no page, only address space, hence the cap
+        // (80 MB; `ulimit -v` counts it) beyond which the vector grows as usual.
+        const size_t lines = size_t(std::count(text.begin(), text.end(), '\n')) + 1;
+        m_objects.reserve(std::min({lines, text.size() / 9 + 1, size_t(1) << 20}));
     }
 
     Scene read() {
