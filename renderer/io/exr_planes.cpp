@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
@@ -29,7 +30,7 @@ constexpr float kFloatMax = std::numeric_limits<float>::max();
 /// otherwise NaN -> 0 and ±inf clamped to ±FLT_MAX), or copies of `fallback`
 /// when src is empty.
 const float* floatPlane(const FilmPlane& src, size_t begin, size_t end, size_t components,
-                        float fallback, bool isDepth, std::vector<float>& storage) {
+                        float fallback, bool isDepth, FilmPlane& storage) {
     const size_t count = (end - begin) * components;
     if (src.empty()) {
         storage.assign(count, fallback);
@@ -50,7 +51,7 @@ const float* floatPlane(const FilmPlane& src, size_t begin, size_t end, size_t c
 /// Half bits of pixels [begin, end) of `src` (floatsToHalf: NaN -> 0, clamped
 /// to ±65504); zeros when src is empty.
 const uint16_t* halfPlane(const FilmPlane& src, size_t begin, size_t end, size_t components,
-                          std::vector<uint16_t>& storage) {
+                          ExrPlanes::HalfPlane& storage) {
     const size_t count = (end - begin) * components;
     if (src.empty()) {
         storage.assign(count, 0);  // half 0
@@ -97,7 +98,7 @@ MatteExtent matteExtent(const Film& film) {
 /// are merged; ranks stay sorted by decreasing coverage. `ranks` is at least
 /// the most any pixel uses: no pixel loses a rank.
 const float* cryptomattePlane(const Film& film, size_t begin, size_t end,
-                              const ExrMatteLayout& layout, std::vector<float>& storage) {
+                              const ExrMatteLayout& layout, FilmPlane& storage) {
     const size_t ranks = size_t(layout.ranks);
     storage.resize((end - begin) * 2 * ranks);
     if (film.mattes.empty()) {  // no coverage anywhere: every rank (0, 0)
@@ -160,20 +161,48 @@ ExrMatteLayout exrMatteLayout(const Film& film, const std::vector<std::string>& 
     });
 }
 
-void prepareExrPlanes(const Film& film, size_t begin, size_t end, bool floatPixels,
-                      const ExrMatteLayout& mattes, ExrPlanes& out) {
+namespace {
+
+/// Pixels [begin, end)'s planes, the independent groups handed to `invoke`
+/// (called with all of them: one after the other, or in parallel).
+template <class Invoke>
+void preparePlanes(const Film& film, size_t begin, size_t end, bool floatPixels,
+                   const ExrMatteLayout& mattes, ExrPlanes& out, const Invoke& invoke) {
     out.rgbaF = nullptr;
     out.rgbaH = nullptr;
-    if (floatPixels)
-        out.rgbaF = floatPlane(film.rgba, begin, end, 4, 0.f, false, out.rgbaCopy);
-    else
-        out.rgbaH = halfPlane(film.rgba, begin, end, 4, out.rgbaHalf);
-    out.z = floatPlane(film.z, begin, end, 1, kNoHitDepth, true, out.zCopy);
-    out.distance = floatPlane(film.distance, begin, end, 1, kNoHitDepth, true, out.distanceCopy);
-    out.objectId = floatPlane(film.objectId, begin, end, 1, -1.f, false, out.objectIdCopy);
-    out.normal = floatPlane(film.normal, begin, end, 3, 0.f, false, out.normalCopy);
-    out.albedo = halfPlane(film.albedo, begin, end, 3, out.albedoHalf);
-    out.crypto = cryptomattePlane(film, begin, end, mattes, out.cryptoValues);
+    invoke(
+        [&] {
+            if (floatPixels)
+                out.rgbaF = floatPlane(film.rgba, begin, end, 4, 0.f, false, out.rgbaCopy);
+            else
+                out.rgbaH = halfPlane(film.rgba, begin, end, 4, out.rgbaHalf);
+        },
+        [&] {
+            out.z = floatPlane(film.z, begin, end, 1, kNoHitDepth, true, out.zCopy);
+            out.distance =
+                floatPlane(film.distance, begin, end, 1, kNoHitDepth, true, out.distanceCopy);
+            out.objectId = floatPlane(film.objectId, begin, end, 1, -1.f, false, out.objectIdCopy);
+        },
+        [&] { out.normal = floatPlane(film.normal, begin, end, 3, 0.f, false, out.normalCopy); },
+        [&] { out.albedo = halfPlane(film.albedo, begin, end, 3, out.albedoHalf); },
+        [&] { out.crypto = cryptomattePlane(film, begin, end, mattes, out.cryptoValues); });
+}
+
+}  // namespace
+
+void prepareExrPlanes(const Film& film, size_t begin, size_t end, bool floatPixels,
+                      const ExrMatteLayout& mattes, ExrPlanes& out) {
+    preparePlanes(film, begin, end, floatPixels, mattes, out,
+                  [](const auto&... group) { (group(), ...); });
+}
+
+void prepareExrFramePlanes(const Film& film, bool floatPixels, const ExrMatteLayout& mattes,
+                           ExrPlanes& out, int threads) {
+    const size_t n = size_t(film.width) * size_t(film.height);
+    runWithThreads(threads, [&] {
+        preparePlanes(film, 0, n, floatPixels, mattes, out,
+                      [](const auto&... group) { tbb::parallel_invoke(group...); });
+    });
 }
 
 }  // namespace raylab

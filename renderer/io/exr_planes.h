@@ -58,14 +58,23 @@ struct ExrPlanes {
     /// decreasing coverage; unused ranks are (0, 0).
     const float* crypto = nullptr;
 
-    // Storage, reused from call to call (grown, never shrunk).
-    std::vector<uint16_t> rgbaHalf, albedoHalf;
-    std::vector<float> cryptoValues, rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
+    // Storage, reused from call to call (grown, never shrunk); a whole
+    // frame's planes on huge pages, as the film's own (huge_page_allocator.h).
+    using HalfPlane = std::vector<uint16_t, HugePageAllocator<uint16_t>>;
+    HalfPlane rgbaHalf, albedoHalf;
+    FilmPlane cryptoValues, rgbaCopy, zCopy, distanceCopy, normalCopy, objectIdCopy;
 };
 
 /// Fills `out` with pixels [begin, end) of `film` (whose layer sizes writeExr
 /// has checked), on the calling thread.
 void prepareExrPlanes(const Film& film, size_t begin, size_t end, bool floatPixels,
                       const ExrMatteLayout& mattes, ExrPlanes& out);
+
+/// Every pixel's planes at once (the compressions OpenEXR writes, which take
+/// the whole frame): the same values as prepareExrPlanes over [0, W·H), its
+/// independent planes prepared side by side on up to `threads` threads (0:
+/// TBB's default).
+void prepareExrFramePlanes(const Film& film, bool floatPixels, const ExrMatteLayout& mattes,
+                           ExrPlanes& out, int threads);
 
 }  // namespace raylab

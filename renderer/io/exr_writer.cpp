@@ -237,7 +237,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     }
     // Other compressions: the whole frame's planes, handed to OpenEXR.
     ExrPlanes planes;
-    prepareExrPlanes(film, 0, n, opts.floatPixels, mattes, planes);
+    prepareExrFramePlanes(film, opts.floatPixels, mattes, planes, opts.threads);
     Imf::FrameBuffer fb;
     for (const FilmChannel& c : layout) {
         const ExrChannelSource s = sourceOf(c, planes, w);

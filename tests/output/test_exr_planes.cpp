@@ -179,6 +179,9 @@ void checkAgainstReference(const Film& film, const std::vector<std::string>& nam
     ExrPlanes whole;
     prepareExrPlanes(film, 0, n, floatPixels, layout, whole);
     CHECK(wrongValues(film, names, floatPixels, ranks, 0, n, whole) == 0);
+    ExrPlanes frame;  // the whole frame's planes side by side on `threads` threads
+    prepareExrFramePlanes(film, floatPixels, layout, frame, threads);
+    CHECK(wrongValues(film, names, floatPixels, ranks, 0, n, frame) == 0);
     const size_t w = size_t(film.width);
     for (size_t step : {16 * w, w, size_t(7777)}) {
         CAPTURE(step);
