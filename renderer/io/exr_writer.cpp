@@ -92,7 +92,7 @@ ExrChannelSource sourceOf(const FilmChannel& c, const ExrPlanes& planes, size_t 
         case Plane::Crypto: data = planes.crypto; break;
     }
     ExrChannelSource s;
-    s.size = c.type == Imf::HALF ? 2 : 4;
+    s.size = exrPixelTypeSize(c.type);
     s.base = static_cast<const char*>(data) + s.size * size_t(c.component);
     s.xStride = ptrdiff_t(s.size * size_t(c.components));
     s.yStride = s.xStride * ptrdiff_t(width);
@@ -216,7 +216,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         tbb::enumerable_thread_specific<BlockPlanes> scratch;
         const size_t bytesPerLine = [&] {
             size_t bytes = 0;
-            for (const FilmChannel* c : fileOrder) bytes += (c->type == Imf::HALF ? 2 : 4) * w;
+            for (const FilmChannel* c : fileOrder) bytes += exrPixelTypeSize(c->type) * w;
             return bytes;
         }();
         const ExrBlockLines lines = [&](int y0, int y1, unsigned char* raw) {

@@ -42,8 +42,6 @@ bool usesLongNames(const Imf::Header& header) {
     return false;
 }
 
-size_t pixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
-
 /// One thread's buffers: the raw block, its pre-pass, and igzip's hash
 /// tables, reused block after block (fresh zeroed pages for each block were
 /// 3% of balls' process: perf, clear_page). One huge-page mapping for all
@@ -205,6 +203,8 @@ void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out) {
     out[0] = raw[0];  // the first byte has no predecessor
 }
 
+size_t exrPixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
+
 void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int lines,
                     unsigned char* raw) {
     for (int k = 0; k < lines; ++k)
@@ -255,7 +255,7 @@ BlockLayout blockLayout(const Imf::Header& header) {
         if (channel.xSampling != 1 || channel.ySampling != 1)
             throw std::logic_error(std::string("encodeExrZipFile: channel ") + it.name() +
                                    " is subsampled");
-        l.bytesPerLine += pixelTypeSize(channel.type) * size_t(l.width);
+        l.bytesPerLine += exrPixelTypeSize(channel.type) * size_t(l.width);
     }
     return l;
 }
@@ -360,7 +360,7 @@ std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& 
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
         const Imf::Channel& channel = it.channel();
         ExrChannelSource source;
-        source.size = pixelTypeSize(channel.type);
+        source.size = exrPixelTypeSize(channel.type);
         if (const Imf::Slice* slice = frameBuffer.findSlice(it.name())) {
             if (slice->type != channel.type || slice->xSampling != 1 || slice->ySampling != 1)
                 throw std::logic_error(std::string("encodeExrZipFile: the slice of channel ") +

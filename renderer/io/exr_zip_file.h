@@ -40,6 +40,9 @@ constexpr int kExrDeflateLevel = 2;
 /// `out` holds n bytes and does not overlap `raw`.
 void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out);
 
+/// Bytes per value of a channel of this type (HALF 2; FLOAT and UINT 4).
+size_t exrPixelTypeSize(Imf::PixelType type);
+
 /// Where one channel's values come from for a run of lines: value x of line
 /// k (k = 0 for the run's first line) at base + x * xStride + k * yStride.
 struct ExrChannelSource {
