@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "geometry/vec.h"
-#include "renderer/huge_page_allocator.h"
+#include "renderer/plane_arena.h"
 #include "shading/color.h"
 
 namespace raylab {
 
-/// One layer of the film: megabytes per frame, so on huge pages (huge_page_allocator.h).
-using FilmPlane = std::vector<float, HugePageAllocator<float>>;
+/// One layer of the film: megabytes per frame, so on huge pages
+/// (huge_page_allocator.h), all of a film's layers in one mapping (plane_arena.h).
+using FilmPlane = std::vector<float, PlaneAllocator<float>>;
 
 /// Depth and distance of a pixel where nothing is hit: finite, the value
 /// Blender's Cycles writes for the background (1e10), so that statistics and
@@ -49,7 +50,7 @@ struct Film {
     FilmPlane objectId;  ///< index of the first object hit, -1 for background
     /// `matteRanks` entries per pixel, by decreasing coverage (ties: lower
     /// object index first); from every sample of the pixel.
-    std::vector<MatteEntry, HugePageAllocator<MatteEntry>> mattes;
+    std::vector<MatteEntry, PlaneAllocator<MatteEntry>> mattes;
     /// Entries per pixel in `mattes`, 1..kMatteRanks: the most objects one
     /// pixel's samples can see (matteRanksOfSampling), so a 1-sample render
     /// keeps 8 bytes per pixel and an SPD render 32 instead of 48 (fresh
@@ -59,9 +60,10 @@ struct Film {
     Film() = default;
     Film(int w, int h) : Film(w, h, 0, 0, w, h) {}
     /// The w × h window at (x0, y0) of a fullW × fullH image, every plane at
-    /// its blank value (above). The 60-100 bytes per pixel are written by TBB
-    /// tasks, a plane each (film.cpp): a frame's first touch of its film is
-    /// not one core's serial pass before the render.
+    /// its blank value (above), all of them in one PlaneArena. The 60-100
+    /// bytes per pixel are written by TBB tasks, a plane each (film.cpp): a
+    /// frame's first touch of its film is not one core's serial pass before
+    /// the render.
     /// `ranks`: matteRanks (clamped to 1..kMatteRanks).
     Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks = kMatteRanks);
 
