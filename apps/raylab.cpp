@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "apps/commands.h"
+#include "apps/exit_keep.h"
 #include "apps/heap_pages.h"
 #include "apps/signals.h"
 #include "renderer/cancel.h"
@@ -110,6 +111,7 @@ int main(int argc, char** argv) {
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
     useHugePageHeap();  // before any thread: see heap_pages.h
     installSignalHandling();
+    setProcessEndsAfterCommand();  // a command's leftovers go with the process (exit_keep.h)
     const int code = run(std::vector<std::string>(argv + 1, argv + argc));
     claimExit();  // from here on the watchdog neither prints nor exits
     return code;

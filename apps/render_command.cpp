@@ -21,6 +21,7 @@
 
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
+#include "apps/exit_keep.h"
 #include "apps/progress_bar.h"
 #include "apps/run_phase.h"
 #include "apps/signals.h"
@@ -628,6 +629,10 @@ int renderCommand(const std::vector<std::string>& args) {
             std::fputs(formatLoadReport(report).c_str(), stdout);  // "" without mpirun
         }
     }
+    // Every frame is committed: the scene and the accelerator go back to the
+    // kernel with the process, not block by block (exit_keep.h).
+    releaseAtExit(std::move(accel));
+    releaseAtExit(std::move(scene));
     // A signal after the last commit still ends as interrupted (its line says
     // the files were written): a stop request is never ignored.
     if (cancelRequested() && mpi.isRoot()) return reportInterrupted();
