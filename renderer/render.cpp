@@ -66,12 +66,22 @@ uint64_t pixelSeed(uint64_t seed, uint64_t pixel) {
     return mix64(seed * SplitMix64::kGamma + pixel + 0x632BE59BD9B4E019ULL);
 }
 
+/// One camera sample through (px, py). `given`, when set, is its camera ray
+/// and that ray's first hit, already asked of the accelerator (a packet).
+struct GivenCameraRay {
+    const Ray& ray;
+    const std::optional<Hit>& hit;
+};
+
 Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
-                   const RenderOptions& opt, double px, double py, WorkCounters& tc) {
+                   const RenderOptions& opt, double px, double py, WorkCounters& tc,
+                   const GivenCameraRay* given = nullptr) {
     Sample s;
-    const Ray ray = scene.camera.generateRay(px, py, opt.width, opt.height);
+    const Ray ray = given ? given->ray : scene.camera.generateRay(px, py, opt.width, opt.height);
     SampleRays spent;
-    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, spent, &tc.shadows), tc.nonFinite);
+    s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, spent, &tc.shadows,
+                                 given ? &given->hit : nullptr),
+                   tc.nonFinite);
     tc.cappedSamples += spent.capped;
     tc.maxSampleRays = std::max(tc.maxSampleRays, spent.traced);
     if (s.first.hit) {
@@ -280,11 +290,33 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         // rays; a work item is one row of corners. Corner (i, y) is the
         // top-left corner of pixel (i, y), whose AOV layers come from it.
         const bool aovRow = r.y0 < m_window.y1 && m_options.wantAovs;
-        for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i) {
-            const Sample s = traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters);
+        const auto store = [&](int i, const Sample& s) {
             buffers.corner(i, r.y0) = {s.c, s.first.hit, int32_t(s.first.objectId)};
             if (aovRow && i < m_window.x1 && s.first.hit)
                 storeFirstHit(buffers.film, buffers.film.index(i, r.y0), s.first);
+        };
+        if (!m_integrator->tracesPackets()) {
+            for (int i = r.x0; i < r.x1 && !cancelRequested(); ++i)
+                store(i, traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters));
+            return;
+        }
+        // The accelerator traces packets: the camera rays of 8 neighbouring
+        // corners are asked together (one Embree packet, each lane's answer
+        // exactly its own); each corner's ray tree then goes on alone, in the
+        // same order as without.
+        constexpr int kPacket = Accelerator::kPacketRays;
+        Ray rays[kPacket];
+        std::optional<Hit> hits[kPacket];
+        for (int i0 = r.x0; i0 < r.x1 && !cancelRequested(); i0 += kPacket) {
+            const int count = std::min(kPacket, r.x1 - i0);
+            for (int k = 0; k < count; ++k)
+                rays[k] = m_scene.camera.generateRay(i0 + k, r.y0, m_options.width, m_options.height);
+            m_integrator->cameraHits(rays, count, hits);
+            for (int k = 0; k < count; ++k) {
+                const GivenCameraRay given{rays[k], hits[k]};
+                store(i0 + k, traceSample(*m_integrator, m_scene, m_options, i0 + k, r.y0, counters,
+                                          &given));
+            }
         }
         return;
     }

@@ -49,14 +49,26 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
 
 WhittedIntegrator::~WhittedIntegrator() = default;
 
-Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
-                            SampleRays& spent, ShadowCache* shadows) const {
-    // The near plane (NFF's hither) is a distance along the view axis.
+double WhittedIntegrator::cameraTMin(const Ray& cameraRay) const {
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
-    const double tNear = along > 0 ? m_scene.cameraNear / along : 0.0;
+    return along > 0 ? m_scene.cameraNear / along : 0.0;
+}
+
+Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
+                            SampleRays& spent, ShadowCache* shadows,
+                            const std::optional<Hit>* cameraHit) const {
     if (shadows) shadows->prepare(m_scene.lights.size(), m_options.maxDepth);
     TraceState state{counters, shadows, spent};
-    return (this->*m_kernel)(cameraRay, tNear, state, first);
+    return (this->*m_kernel)(cameraRay, cameraTMin(cameraRay), state, first, cameraHit);
+}
+
+void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit>* out) const {
+    double tMin[Accelerator::kPacketRays], tMax[Accelerator::kPacketRays];
+    for (int i = 0; i < count; ++i) {
+        tMin[i] = cameraTMin(rays[i]);
+        tMax[i] = kInf;  // as trace asks
+    }
+    m_accel.intersectPacket(rays, tMin, tMax, count, out);
 }
 
 bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
@@ -73,10 +85,13 @@ bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
 
 template <unsigned E>
 Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& state,
-                               FirstHit* first) const {
+                               FirstHit* first, const std::optional<Hit>* cameraHit) const {
     // No footprint yet: trace computes the camera ray's at its hit (a miss
     // needs none) from the unit direction it has there.
-    return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, nullptr);
+    if (!cameraHit) return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, nullptr);
+    state.counters.count(RayType::Camera, 1);
+    ++state.spent.traced;
+    return traceHit<E>(cameraRay, *cameraHit, 1, RayType::Camera, 1.0, state, first, nullptr);
 }
 
 template <unsigned E>
@@ -145,7 +160,14 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType t
                                const Footprint<E>* carried) const {
     state.counters.count(type, depth);
     ++state.spent.traced;
-    const std::optional<Hit> hit = m_accel.intersect(ray, tMin, kInf);
+    return traceHit<E>(ray, m_accel.intersect(ray, tMin, kInf), depth, type, weight, state, first,
+                       carried);
+}
+
+template <unsigned E>
+Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit, int depth,
+                                  RayType type, double weight, TraceState& state, FirstHit* first,
+                                  const Footprint<E>* carried) const {
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) state.counters.cameraHits++;
 

@@ -5,6 +5,7 @@
 // (template over EffectBits) and dispatched once per render.
 
 #include <limits>
+#include <optional>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -54,8 +55,17 @@ public:
     /// reflection or refraction ray is traced: the result is then partial.
     /// `shadows` (may be null) is the calling thread's shadow cache: it
     /// changes no answer, only how fast shadow rays are answered.
+    /// `cameraHit`, when given, is the camera ray's first hit as the
+    /// accelerator answered it (cameraHits): it is not asked again.
     Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
-             ShadowCache* shadows = nullptr) const;
+             ShadowCache* shadows = nullptr, const std::optional<Hit>* cameraHit = nullptr) const;
+
+    /// The first hits of `count` (1..Accelerator::kPacketRays) camera rays,
+    /// asked of the accelerator together (a packet): out[i] is what Li would
+    /// find for rays[i] itself.
+    void cameraHits(const Ray* rays, int count, std::optional<Hit>* out) const;
+    /// Whether cameraHits is worth calling (the accelerator traces packets).
+    bool tracesPackets() const { return m_accel.tracesPackets(); }
 
 private:
     /// What one worker carries through a ray tree.
@@ -73,10 +83,22 @@ private:
     using HitFootprintOf = std::conditional_t<textured(E), HitFootprint, NoFootprint>;
 
     template <unsigned E>
-    Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first) const;
+    Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first,
+                const std::optional<Hit>* cameraHit) const;
+    /// Counts the ray, asks the accelerator for its hit and shades it (traceHit).
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
                 TraceState& state, FirstHit* first, const Footprint<E>* carried) const;
+    /// The radiance a counted ray brings back from `hit` (the background for none).
+    /// Inlined into trace and start: the ray tree's hot path keeps one call per ray.
+    template <unsigned E>
+    [[gnu::always_inline]] inline Color traceHit(const Ray& ray, const std::optional<Hit>& hit,
+                                                 int depth, RayType type, double weight,
+                                                 TraceState& state, FirstHit* first,
+                                                 const Footprint<E>* carried) const;
+    /// The camera ray's lower bound: the near plane (NFF's hither) is a
+    /// distance along the view axis.
+    double cameraTMin(const Ray& cameraRay) const;
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
@@ -84,7 +106,8 @@ private:
     /// Whether the sample may trace one more reflection or refraction ray.
     bool mayBranch(SampleRays& spent) const;
 
-    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, TraceState&, FirstHit*) const;
+    using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, TraceState&, FirstHit*,
+                                                const std::optional<Hit>*) const;
     /// One kernel per effect combination: entry i is start<i>.
     template <unsigned... E>
     static constexpr auto kernelTable(std::integer_sequence<unsigned, E...>);

@@ -30,6 +30,21 @@ public:
     virtual ~Accelerator() = default;
     /// Closest hit with tMin < t < tMax.
     virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const = 0;
+    /// The most rays intersectPacket() takes at once.
+    static constexpr int kPacketRays = 8;
+    /// Whether intersectPacket() traces rays together, faster than one at a
+    /// time: the integrator then asks rows of camera rays in packets. False
+    /// by default (and for the ray recorder, which follows each ray tree in
+    /// its depth-first order).
+    virtual bool tracesPackets() const { return false; }
+    /// intersect() of `count` (1..kPacketRays) rays at once: out[i] is
+    /// exactly intersect(rays[i], tMin[i], tMax[i]). For coherent rays (a row
+    /// of camera rays): Embree traces them as one packet; the default asks
+    /// one at a time.
+    virtual void intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                 int count, std::optional<Hit>* out) const {
+        for (int i = 0; i < count; ++i) out[i] = intersect(rays[i], tMin[i], tMax[i]);
+    }
     /// Any hit with tMin < t < tMax (shadow feelers, opaque shadows).
     virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
     /// occluded() with a hint: the accelerator may first ask the primitive the

@@ -114,6 +114,7 @@ void EmbreeAccelerator::addTriangles(const Scene& scene, RTCBuildQuality quality
         if (m_triangleGeoms.size() <= g->geomId) m_triangleGeoms.resize(g->geomId + 1);
         const unsigned id = g->geomId;
         m_triangleGeoms[id] = std::move(g);
+        m_hasTriangles = true;
     }
 }
 
@@ -222,6 +223,52 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     if (hit && rayhit.hit.geomID != m_userGeomId && nearTriangleEdge(rayhit.hit.u, rayhit.hit.v))
         return resolveEdgeHit(m_edgeHits, ray, tMin, tMax, *hit);
     return hit;
+}
+
+void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                        int count, std::optional<Hit>* out) const {
+    if (m_hasTriangles || count < 2 || count > kPacketRays) {
+        Accelerator::intersectPacket(rays, tMin, tMax, count, out);
+        return;
+    }
+    static_assert(kPacketRays == 8, "one rtcIntersect8 packet");
+    alignas(32) RTCRayHit8 packet;
+    alignas(32) int valid[8];
+    EmbreeQueryContext lanes[8];
+    for (int k = 0; k < 8; ++k) {
+        RTCRay r{};  // an inactive lane: zeros, never read by Embree
+        valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
+        packet.ray.org_x[k] = r.org_x;
+        packet.ray.org_y[k] = r.org_y;
+        packet.ray.org_z[k] = r.org_z;
+        packet.ray.dir_x[k] = r.dir_x;
+        packet.ray.dir_y[k] = r.dir_y;
+        packet.ray.dir_z[k] = r.dir_z;
+        packet.ray.tnear[k] = r.tnear;
+        packet.ray.tfar[k] = r.tfar;
+        packet.ray.time[k] = r.time;
+        packet.ray.mask[k] = r.mask;
+        packet.ray.id[k] = r.id;
+        packet.ray.flags[k] = r.flags;
+        packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        if (k < count) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
+    }
+    EmbreeQueryContext ctx;
+    initContext(ctx, nullptr, 0, 0);
+    ctx.lanes = lanes;
+    rtcIntersect8(valid, m_scene.get(), &ctx.rtc, &packet);
+    for (int k = 0; k < count; ++k) {
+        // Only the user geometry is in the scene: a lane's hit is the one
+        // its exact context recorded, as decode() reads a single ray's.
+        if (valid[k] == 0 || packet.hit.geomID[k] != m_userGeomId || !lanes[k].exactHit) {
+            out[k] = std::nullopt;
+            continue;
+        }
+        const EmbreeUserTable::Entry& e = m_user.entries[lanes[k].bestEntry];
+        out[k] = Hit{lanes[k].bestT, e.object, e.prim, lanes[k].bestU, lanes[k].bestV};
+    }
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {

@@ -40,6 +40,14 @@ public:
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
 
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    /// One rtcIntersect8 packet, each lane's analytic shapes tested with its
+    /// exact double ray (the same answers as intersect()). Scenes with native
+    /// triangles ask one ray at a time: Embree's packet triangle test rounds
+    /// its barycentrics differently, which could move a hit across the edge
+    /// band of embree_edge_hits.h.
+    void intersectPacket(const Ray* rays, const double* tMin, const double* tMax, int count,
+                         std::optional<Hit>* out) const override;
+    bool tracesPackets() const override { return !m_hasTriangles; }
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
     /// The hint names a user-geometry primitive (its entry in the table): its
     /// exact Shape::occluded test is exactly what the callback would run for
@@ -93,6 +101,7 @@ private:
     /// geomID -> triangle geometry (null for the user geometry); the
     /// filter functions hold their addresses.
     std::vector<std::unique_ptr<EmbreeTriangleGeometry>> m_triangleGeoms;
+    bool m_hasTriangles = false;  ///< some object went in as native triangles
     EmbreeScene m_scene;
     unsigned m_userGeomId = RTC_INVALID_GEOMETRY_ID;
     std::vector<const Shape*> m_shapes;  ///< Scene::objects' shapes, for edge hits

@@ -154,15 +154,30 @@ template <class Args, LaneTest<Args> FloatLane>
         if (args->valid[i] == -1) FloatLane(args, table, ctx, args->N, i);
 }
 
-/// The intersect and occlusion callbacks. Single-ray queries from
-/// EmbreeAccelerator carry the exact double ray, so the shape computes the
-/// same answer as in the naive loop; every other query tests the float lanes.
+/// Every valid lane of a packet whose context carries one exact context per
+/// lane (EmbreeAccelerator::intersectPacket): each lane is tested exactly as
+/// a single ray with that lane's double ray and best hit.
+template <class Args, LaneTest<Args> ExactLane>
+[[gnu::noinline]] void exactLanes(const Args* args, const EmbreeUserTable& table,
+                                  EmbreeQueryContext& ctx) {
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1) ExactLane(args, table, ctx.lanes[i], args->N, i);
+}
+
+/// The intersect and occlusion callbacks. Queries from EmbreeAccelerator
+/// carry the exact double rays (one, or one per packet lane), so the shape
+/// computes the same answer as in the naive loop; every other query tests
+/// the float lanes.
 template <class Args, LaneTest<Args> ExactLane, LaneTest<Args> FloatLane>
 void laneCallback(const Args* args) {
     const EmbreeUserTable& table = tableOf(args->geometryUserPtr);
     EmbreeQueryContext& ctx = contextOf(args->context);
     if (args->N == 1 && ctx.ray != nullptr) {
         if (args->valid[0] == -1) ExactLane(args, table, ctx, 1, 0);
+        return;
+    }
+    if (ctx.lanes != nullptr) {
+        exactLanes<Args, ExactLane>(args, table, ctx);
         return;
     }
     floatLanes<Args, FloatLane>(args, table, ctx);

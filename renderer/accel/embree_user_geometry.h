@@ -46,6 +46,9 @@ struct EmbreeQueryContext {
     /// Occlusion queries: the entry whose exact test found the occluder, or
     /// OcclusionHint::kNone (none yet, or a native triangle occluded).
     uint32_t occluderEntry = 0xffffffffu;
+    /// A packet's exact lanes (EmbreeAccelerator::intersectPacket): lane i's
+    /// double ray, interval and best hit are lanes[i]'s; null for single rays.
+    EmbreeQueryContext* lanes = nullptr;
 
     /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
     void init(const Ray* r, double tMinimum, double tMax) {
@@ -59,6 +62,7 @@ struct EmbreeQueryContext {
         filter = nullptr;
         shadow = nullptr;
         occluderEntry = 0xffffffffu;
+        lanes = nullptr;
     }
 };
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -503,4 +504,110 @@ TEST_CASE("embree: occlusion with a shadow-cache hint gives occluded()'s answer,
     CHECK(blocked > 1000);  // both answers well represented
     CHECK(blocked < 3900);
     CHECK(named > 100);     // and spheres named as occluders
+}
+
+namespace {
+
+/// Analytic shapes only (Embree traces their packets): spheres, two
+/// coincident spheres and two coplanar quads (exact ties, settled by the lower
+/// entry), a tiling of quads sharing edges, a cylinder and a ground plane.
+Scene packetScene() {
+    Rng rng(31);
+    Scene scene;
+    scene.materials.resize(2);
+    for (int i = 0; i < 40; ++i)
+        scene.objects.push_back(shapeObject("sphere" + std::to_string(i),
+                                            makeSphere(rng.point(-6, 6), rng.uniform(0.2, 1.2))));
+    for (int i = 0; i < 2; ++i)
+        scene.objects.push_back(shapeObject("twin" + std::to_string(i), makeSphere({1, 2, 3}, 0.9)));
+    const auto quadAt = [](double x, double y, double z) {
+        PolygonParams p;
+        p.vertices = {{x, y, z}, {x + 1, y, z}, {x + 1, y + 1, z}, {x, y + 1, z}};
+        return makePolygon(p);
+    };
+    for (int i = 0; i < 2; ++i) scene.objects.push_back(shapeObject("coplanar", quadAt(-1, -1, 7)));
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            scene.objects.push_back(shapeObject("tile", quadAt(-2 + i, -2 + j, -7)));
+    ConeParams c;
+    c.base = {-4, -4, -5};
+    c.apex = {-3, -4, 4};
+    c.baseRadius = c.apexRadius = 0.7;
+    scene.objects.push_back(shapeObject("cylinder", makeCone(c)));
+    scene.objects.push_back(shapeObject("ground", makePlane({0, 0, -9}, {0, 0, 1}, 40), 1));
+    return scene;
+}
+
+bool sameHit(const std::optional<Hit>& a, const std::optional<Hit>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->t == b->t && a->object == b->object && a->prim == b->prim && a->u == b->u &&
+                  a->v == b->v);
+}
+
+}  // namespace
+
+TEST_CASE("embree: a packet's hits are intersect()'s, lane by lane") {
+    // Bundles of 1-8 rays: neighbours from one eye (as a row of camera rays),
+    // rays aimed exactly at shared quad edges and corners and at the ties,
+    // random unrelated rays, and lanes that cannot be traced (NaN, an empty
+    // interval), in every position of the packet.
+    const Scene scene = packetScene();
+    EmbreeAccelerator embree(scene, {});
+    NaiveAccelerator naive(scene, {});
+    CHECK(embree.tracesPackets());
+    CHECK_FALSE(naive.tracesPackets());
+    Rng rng(5);
+    int hits = 0, ties = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const int count = 1 + n % 8;
+        Ray rays[8];
+        double tMin[8], tMax[8];
+        const Vec3 eye = rng.point(-3, 3) + Vec3{0, 0, 14};
+        for (int k = 0; k < count; ++k) {
+            Vec3 target;
+            switch ((n / 8 + k) % 4) {
+                case 0: target = rng.point(-6, 6); break;                                         // anywhere
+                case 1: target = {-2 + double(rng.next() % 5), -2 + rng.uniform(0, 4), -7}; break;  // a shared edge
+                case 2: target = {-1 + rng.uniform(0, 1), -1 + rng.uniform(0, 1), 7}; break;      // the coplanar tie
+                default: target = Vec3{1, 2, 3} + rng.direction() * 0.5; break;                   // the twins
+            }
+            rays[k] = Ray{n % 5 == 4 ? rng.point(-14, 14) : eye, target - eye};
+            tMin[k] = 0;
+            tMax[k] = std::numeric_limits<double>::infinity();
+        }
+        if (n % 7 == 3) rays[n % count].d.x = std::numeric_limits<double>::quiet_NaN();
+        if (n % 11 == 5) tMax[n % count] = tMin[n % count];
+        std::optional<Hit> packet[8];
+        embree.intersectPacket(rays, tMin, tMax, count, packet);
+        for (int k = 0; k < count; ++k) {
+            const std::optional<Hit> single = embree.intersect(rays[k], tMin[k], tMax[k]);
+            CHECK(sameHit(packet[k], single));
+            CHECK(sameHit(packet[k], naive.intersect(rays[k], tMin[k], tMax[k])));
+            hits += single.has_value();
+            ties += single && (scene.objects[single->object].name == "coplanar" ||
+                               scene.objects[single->object].name.rfind("twin", 0) == 0);
+        }
+    }
+    CHECK(hits > 8000);
+    CHECK(ties > 2000);
+}
+
+TEST_CASE("embree: packets in a scene with native triangles are asked one ray at a time") {
+    const Scene scene = randomScene(21, 50);
+    EmbreeAccelerator embree(scene, {});
+    CHECK_FALSE(embree.tracesPackets());
+    Rng rng(9);
+    for (int n = 0; n < 500; ++n) {
+        Ray rays[8];
+        double tMin[8], tMax[8];
+        const Vec3 eye = rng.point(-12, 12);
+        for (int k = 0; k < 8; ++k) {
+            rays[k] = Ray{eye, rng.point(-12, 12) - eye};
+            tMin[k] = 1e-9;
+            tMax[k] = std::numeric_limits<double>::infinity();
+        }
+        std::optional<Hit> packet[8];
+        embree.intersectPacket(rays, tMin, tMax, 8, packet);
+        for (int k = 0; k < 8; ++k) CHECK(sameHit(packet[k], embree.intersect(rays[k], tMin[k], tMax[k])));
+    }
 }
