@@ -17,28 +17,29 @@ Film::Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks)
       fullHeight(fullH),
       matteRanks(std::clamp(ranks, 1, kMatteRanks)) {
     const size_t n = size_t(w) * size_t(h);
-    const size_t floats = n * sizeof(float), mattesBytes = n * size_t(matteRanks) * sizeof(MatteEntry);
-    // Every plane's slot in one mapping (plane_arena.h), taken here in a
-    // fixed order; the tasks below then fill them without reallocating.
-    const auto arena = std::make_shared<PlaneArena>(PlaneArena::slot(4 * floats) +
-                                                    3 * PlaneArena::slot(floats) +
-                                                    2 * PlaneArena::slot(3 * floats) +
-                                                    PlaneArena::slot(mattesBytes));
-    const PlaneAllocator<float> fromArena(arena);
-    for (auto [plane, size] : {std::pair{&rgba, n * 4}, {&z, n}, {&distance, n}, {&normal, n * 3},
-                               {&albedo, n * 3}, {&objectId, n}}) {
-        *plane = FilmPlane(fromArena);
+    // Every plane's slot in one mapping (plane_arena.h), sized for and taken
+    // by these reservations in a fixed order; the tasks below then fill the
+    // planes without reallocating.
+    const std::pair<FilmPlane*, size_t> planes[] = {{&rgba, n * 4},   {&z, n},
+                                                    {&distance, n},   {&normal, n * 3},
+                                                    {&albedo, n * 3}, {&objectId, n}};
+    const size_t matteCount = n * size_t(matteRanks);
+    size_t bytes = PlaneArena::slot(matteCount * sizeof(MatteEntry));
+    for (const auto& [plane, size] : planes) bytes += PlaneArena::slot(size * sizeof(float));
+    const auto arena = std::make_shared<PlaneArena>(bytes);
+    for (const auto& [plane, size] : planes) {
+        *plane = FilmPlane(PlaneAllocator<float>(arena));
         plane->reserve(size);
     }
     mattes = decltype(mattes)(PlaneAllocator<MatteEntry>(arena));
-    mattes.reserve(n * size_t(matteRanks));
+    mattes.reserve(matteCount);
     tbb::parallel_invoke([&] { rgba.assign(n * 4, 0.f); },
                          [&] { z.assign(n, kNoHitDepth); },
                          [&] { distance.assign(n, kNoHitDepth); },
                          [&] { normal.assign(n * 3, 0.f); },
                          [&] { albedo.assign(n * 3, 0.f); },
                          [&] { objectId.assign(n, -1.f); },
-                         [&] { mattes.assign(n * size_t(matteRanks), MatteEntry{}); });
+                         [&] { mattes.assign(matteCount, MatteEntry{}); });
 }
 
 }  // namespace raylab

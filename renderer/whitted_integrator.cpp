@@ -89,8 +89,7 @@ Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& s
     // No footprint yet: trace computes the camera ray's at its hit (a miss
     // needs none) from the unit direction it has there.
     if (!cameraHit) return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, nullptr);
-    state.counters.count(RayType::Camera, 1);
-    ++state.spent.traced;
+    countRay(state, RayType::Camera, 1);
     return traceHit<E>(cameraRay, *cameraHit, 1, RayType::Camera, 1.0, state, first, nullptr);
 }
 
@@ -158,8 +157,7 @@ template <unsigned E>
 Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
                                double weight, TraceState& state, FirstHit* first,
                                const Footprint<E>* carried) const {
-    state.counters.count(type, depth);
-    ++state.spent.traced;
+    countRay(state, type, depth);
     return traceHit<E>(ray, m_accel.intersect(ray, tMin, kInf), depth, type, weight, state, first,
                        carried);
 }

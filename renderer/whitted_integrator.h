@@ -85,6 +85,11 @@ private:
     template <unsigned E>
     Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first,
                 const std::optional<Hit>* cameraHit) const;
+    /// One more ray of `type` at `depth`, in the render's counters and this sample's.
+    static void countRay(TraceState& state, RayType type, int depth) {
+        state.counters.count(type, depth);
+        ++state.spent.traced;
+    }
     /// Counts the ray, asks the accelerator for its hit and shades it (traceHit).
     template <unsigned E>
     Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,

@@ -225,6 +225,38 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     return hit;
 }
 
+namespace {
+
+/// Ray r into lane k of a packet, with no hit yet (rtcIntersect8's input).
+void storeLane(const RTCRay& r, int k, RTCRayHit8& p) {
+    p.ray.org_x[k] = r.org_x;
+    p.ray.org_y[k] = r.org_y;
+    p.ray.org_z[k] = r.org_z;
+    p.ray.dir_x[k] = r.dir_x;
+    p.ray.dir_y[k] = r.dir_y;
+    p.ray.dir_z[k] = r.dir_z;
+    p.ray.tnear[k] = r.tnear;
+    p.ray.tfar[k] = r.tfar;
+    p.ray.time[k] = r.time;
+    p.ray.mask[k] = r.mask;
+    p.ray.id[k] = r.id;
+    p.ray.flags[k] = r.flags;
+    p.hit.geomID[k] = p.hit.primID[k] = p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+}
+
+/// Lane k's answer as a single ray's record: the fields decode() reads.
+RTCRayHit laneAnswer(const RTCRayHit8& p, int k) {
+    RTCRayHit h{};
+    h.ray.tfar = p.ray.tfar[k];
+    h.hit.u = p.hit.u[k];
+    h.hit.v = p.hit.v[k];
+    h.hit.primID = p.hit.primID[k];
+    h.hit.geomID = p.hit.geomID[k];
+    return h;
+}
+
+}  // namespace
+
 void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
                                         int count, std::optional<Hit>* out) const {
     if (m_hasTriangles || count < 2 || count > kPacketRays) {
@@ -238,21 +270,7 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
     for (int k = 0; k < 8; ++k) {
         RTCRay r{};  // an inactive lane: zeros, never read by Embree
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
-        packet.ray.org_x[k] = r.org_x;
-        packet.ray.org_y[k] = r.org_y;
-        packet.ray.org_z[k] = r.org_z;
-        packet.ray.dir_x[k] = r.dir_x;
-        packet.ray.dir_y[k] = r.dir_y;
-        packet.ray.dir_z[k] = r.dir_z;
-        packet.ray.tnear[k] = r.tnear;
-        packet.ray.tfar[k] = r.tfar;
-        packet.ray.time[k] = r.time;
-        packet.ray.mask[k] = r.mask;
-        packet.ray.id[k] = r.id;
-        packet.ray.flags[k] = r.flags;
-        packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
-        packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        storeLane(r, k, packet);
         if (k < count) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
     }
     EmbreeQueryContext ctx;
@@ -260,14 +278,12 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
     ctx.lanes = lanes;
     rtcIntersect8(valid, m_scene.get(), &ctx.rtc, &packet);
     for (int k = 0; k < count; ++k) {
-        // Only the user geometry is in the scene: a lane's hit is the one
-        // its exact context recorded, as decode() reads a single ray's.
-        if (valid[k] == 0 || packet.hit.geomID[k] != m_userGeomId || !lanes[k].exactHit) {
-            out[k] = std::nullopt;
+        if (valid[k] == 0) {
+            out[k] = std::nullopt;  // as intersect() answers a ray it cannot trace
             continue;
         }
-        const EmbreeUserTable::Entry& e = m_user.entries[lanes[k].bestEntry];
-        out[k] = Hit{lanes[k].bestT, e.object, e.prim, lanes[k].bestU, lanes[k].bestV};
+        // Each lane decoded as a single ray's answer, from its own context.
+        out[k] = decode(laneAnswer(packet, k), lanes[k]);
     }
 }
 
