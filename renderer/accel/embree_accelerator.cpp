@@ -114,7 +114,6 @@ void EmbreeAccelerator::addTriangles(const Scene& scene, RTCBuildQuality quality
         if (m_triangleGeoms.size() <= g->geomId) m_triangleGeoms.resize(g->geomId + 1);
         const unsigned id = g->geomId;
         m_triangleGeoms[id] = std::move(g);
-        m_hasTriangles = true;
     }
 }
 
@@ -259,7 +258,7 @@ RTCRayHit laneAnswer(const RTCRayHit8& p, int k) {
 
 void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
                                         int count, std::optional<Hit>* out) const {
-    if (m_hasTriangles || count < 2 || count > kPacketRays) {
+    if (count < 2 || count > kPacketRays) {
         Accelerator::intersectPacket(rays, tMin, tMax, count, out);
         return;
     }
@@ -282,8 +281,13 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
             out[k] = std::nullopt;  // as intersect() answers a ray it cannot trace
             continue;
         }
-        // Each lane decoded as a single ray's answer, from its own context.
-        out[k] = decode(laneAnswer(packet, k), lanes[k]);
+        // Each lane decoded as a single ray's answer, from its own context,
+        // a triangle hit near an edge resolved as intersect() resolves it.
+        const RTCRayHit answer = laneAnswer(packet, k);
+        out[k] = decode(answer, lanes[k]);
+        if (out[k] && answer.hit.geomID != m_userGeomId &&
+            nearTriangleEdge(answer.hit.u, answer.hit.v))
+            out[k] = resolveEdgeHit(m_edgeHits, rays[k], tMin[k], tMax[k], *out[k]);
     }
 }
 
