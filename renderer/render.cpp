@@ -185,36 +185,104 @@ void storePixel(Film& film, size_t i, const Color& c, double coverage, AlphaMode
     film.rgba[4 * i + 3] = alpha == AlphaMode::Opaque ? 1.f : float(coverage);
 }
 
+/// One pixel's stratified supersampling: where its samples go in the pixel
+/// (seeded by the pixel's index in the full image, so a crop renders it
+/// alike) and the sum of what they bring back, in sample order.
+class PixelSamples {
+public:
+    PixelSamples() = default;
+    /// Starts pixel (x, y): n = opt.spp samples, none traced yet.
+    void start(const RenderOptions& opt, int x, int y) {
+        m_n = std::max(1, opt.spp);
+        m_gridSide = squareGridSide(m_n);
+        m_rng = Pcg32(pixelSeed(opt.seed, size_t(y) * size_t(opt.width) + size_t(x)), 0);
+        // n-rooks permutation for non-square sample counts (Fisher-Yates).
+        if (m_n > 1 && m_gridSide == 0) {
+            m_perm.resize(m_n);
+            std::iota(m_perm.begin(), m_perm.end(), 0);
+            for (int k = m_n - 1; k > 0; --k) std::swap(m_perm[k], m_perm[m_rng.next() % uint32_t(k + 1)]);
+        } else {
+            m_perm.clear();
+        }
+        m_added = 0;
+        m_sum = Color{};
+        m_hits = 0;
+        m_mattes = MatteCoverage{};
+    }
+    int count() const { return m_n; }
+    /// Sample k's offset in the pixel; k = 0, 1, ... in order (it draws from the pixel's generator).
+    std::pair<double, double> position(int k) {
+        return stratifiedSample(k, m_n, m_gridSide, m_rng, m_perm.data());
+    }
+    /// Adds the next sample (in sample order) of pixel i; after the last,
+    /// stores the pixel in the film and returns true.
+    bool add(const Sample& s, Film& film, size_t i, const RenderOptions& opt) {
+        m_sum += s.c;
+        m_hits += s.first.hit;
+        // The AOV layers come from the first sample (the centre when spp = 1),
+        // the object coverage from all of them.
+        if (m_added == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
+        if (opt.wantAovs) m_mattes.add(int(s.first.objectId), 1.0);
+        if (++m_added < m_n) return false;
+        if (opt.wantAovs) m_mattes.store({film.mattesOf(i), size_t(film.matteRanks)}, double(m_n));
+        storePixel(film, i, m_sum / double(m_n), double(m_hits) / m_n, opt.alpha);
+        return true;
+    }
+
+private:
+    int m_n = 1, m_gridSide = 1, m_added = 0;
+    Pcg32 m_rng{0, 0};
+    std::vector<int> m_perm;
+    Color m_sum;
+    int m_hits = 0;
+    MatteCoverage m_mattes;
+};
+
 /// Renders pixel (x, y) with stratified supersampling.
 void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
                  const RenderOptions& opt, Film& film, int x, int y, WorkCounters& tc) {
-    const size_t i = film.index(x, y);
-    const int n = std::max(1, opt.spp);
-    // Seeded by the pixel's index in the full image, so a crop renders it alike.
-    Pcg32 rng(pixelSeed(opt.seed, size_t(y) * size_t(opt.width) + size_t(x)), 0);
-    // n-rooks permutation for non-square sample counts (Fisher-Yates).
-    std::vector<int> perm;
-    const int gridSide = squareGridSide(n);
-    if (n > 1 && gridSide == 0) {
-        perm.resize(n);
-        std::iota(perm.begin(), perm.end(), 0);
-        for (int k = n - 1; k > 0; --k) std::swap(perm[k], perm[rng.next() % uint32_t(k + 1)]);
+    PixelSamples pixel;
+    pixel.start(opt, x, y);
+    for (int k = 0; k < pixel.count(); ++k) {
+        const auto [sx, sy] = pixel.position(k);
+        pixel.add(traceSample(integrator, scene, opt, x + sx, y + sy, tc), film, film.index(x, y), opt);
     }
-    Color sum;
-    int hits = 0;
-    MatteCoverage mattes;
-    for (int k = 0; k < n; ++k) {
-        const auto [sx, sy] = stratifiedSample(k, n, gridSide, rng, perm.data());
-        const Sample s = traceSample(integrator, scene, opt, x + sx, y + sy, tc);
-        sum += s.c;
-        hits += s.first.hit;
-        // The AOV layers come from the first sample (the centre when spp = 1),
-        // the object coverage from all of them.
-        if (k == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
-        if (opt.wantAovs) mattes.add(int(s.first.objectId), 1.0);
+}
+
+/// renderPixel over the pixels [x0, x1) of row y (at most kTileSize), with
+/// their camera rays asked of the accelerator 8 at a time: the samples of
+/// one pixel, then of the next, in renderPixel's order. Each sample's ray,
+/// its hit (exactly the single ray's) and its ray tree are renderPixel's, and
+/// each pixel sums its samples in the same order: every pixel is the same.
+void renderRowInPackets(const WhittedIntegrator& integrator, const Scene& scene,
+                        const RenderOptions& opt, Film& film, int y, int x0, int x1,
+                        WorkCounters& tc) {
+    constexpr int kPacket = Accelerator::kPacketRays;
+    PixelSamples pixels[kTileSize];
+    Ray rays[kPacket];
+    std::optional<Hit> hits[kPacket];
+    int owner[kPacket];  // each lane's pixel, x - x0
+    int count = 0;
+    const auto trace = [&] {
+        integrator.cameraHits(rays, count, hits);
+        for (int j = 0; j < count; ++j) {
+            const GivenCameraRay given{rays[j], hits[j]};
+            pixels[owner[j]].add(traceSample(integrator, scene, opt, 0, 0, tc, &given), film,
+                                 film.index(x0 + owner[j], y), opt);
+        }
+        count = 0;
+    };
+    for (int x = x0; x < x1 && !cancelRequested(); ++x) {  // a stop cuts the row short
+        PixelSamples& pixel = pixels[x - x0];
+        pixel.start(opt, x, y);
+        for (int k = 0; k < pixel.count(); ++k) {
+            const auto [sx, sy] = pixel.position(k);
+            rays[count] = scene.camera.generateRay(x + sx, y + sy, opt.width, opt.height);
+            owner[count] = x - x0;
+            if (++count == kPacket) trace();
+        }
     }
-    if (opt.wantAovs) mattes.store({film.mattesOf(i), size_t(film.matteRanks)}, double(n));
-    storePixel(film, i, sum / double(n), double(hits) / n, opt.alpha);
+    if (count > 0) trace();
 }
 
 }  // namespace
@@ -338,6 +406,12 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
                 storePixel(buffers.film, i, c, coverage, m_options.alpha);
             }
         }
+        return;
+    }
+    if (m_integrator->tracesPackets()) {
+        for (int y = r.y0; y < r.y1 && !cancelRequested(); ++y)
+            renderRowInPackets(*m_integrator, m_scene, m_options, buffers.film, y, r.x0, r.x1,
+                               counters);
         return;
     }
     for (int y = r.y0; y < r.y1; ++y)

@@ -269,6 +269,7 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
     for (int k = 0; k < 8; ++k) {
         RTCRay r{};  // an inactive lane: zeros, never read by Embree
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
+        r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeLane(r, k, packet);
         if (k < count) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
     }

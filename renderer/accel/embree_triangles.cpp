@@ -50,7 +50,7 @@ void filterTriangles(const RTCFilterFunctionNArguments* args) {
         // A transmitter's candidate is a plain hit but in filtered shadows.
         if (!g.cutsOut && !(Occlusion && ctx.shadow)) continue;
         const Ray ray = n == 1 && ctx.ray ? *ctx.ray
-                        : ctx.lanes       ? *ctx.lanes[i].ray
+                        : ctx.lanes       ? *ctx.lanes[RTCRayN_id(args->ray, n, i)].ray
                                           : Ray{Vec3{RTCRayN_org_x(args->ray, n, i),
                                                      RTCRayN_org_y(args->ray, n, i),
                                                      RTCRayN_org_z(args->ray, n, i)} +

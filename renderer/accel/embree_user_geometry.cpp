@@ -154,14 +154,25 @@ template <class Args, LaneTest<Args> FloatLane>
         if (args->valid[i] == -1) FloatLane(args, table, ctx, args->N, i);
 }
 
+/// The callback's ray data (intersect and occlusion callbacks differ).
+inline RTCRayN* raysOf(const RTCIntersectFunctionNArguments* args) {
+    return RTCRayHitN_RayN(args->rayhit, args->N);
+}
+inline RTCRayN* raysOf(const RTCOccludedFunctionNArguments* args) { return args->ray; }
+
 /// Every valid lane of a packet whose context carries one exact context per
 /// lane (EmbreeAccelerator::intersectPacket): each lane is tested exactly as
-/// a single ray with that lane's double ray and best hit.
+/// a single ray with that lane's double ray and best hit. The lane is named
+/// by the ray's id, not by its place in the callback: Embree may hand a
+/// packet to the callbacks in smaller pieces or one ray at a time (an SSE
+/// device emulates rtcIntersect8).
 template <class Args, LaneTest<Args> ExactLane>
 [[gnu::noinline]] void exactLanes(const Args* args, const EmbreeUserTable& table,
                                   EmbreeQueryContext& ctx) {
+    RTCRayN* rays = raysOf(args);
     for (unsigned i = 0; i < args->N; ++i)
-        if (args->valid[i] == -1) ExactLane(args, table, ctx.lanes[i], args->N, i);
+        if (args->valid[i] == -1)
+            ExactLane(args, table, ctx.lanes[RTCRayN_id(rays, args->N, i)], args->N, i);
 }
 
 /// The intersect and occlusion callbacks. Queries from EmbreeAccelerator

@@ -46,8 +46,9 @@ struct EmbreeQueryContext {
     /// Occlusion queries: the entry whose exact test found the occluder, or
     /// OcclusionHint::kNone (none yet, or a native triangle occluded).
     uint32_t occluderEntry = 0xffffffffu;
-    /// A packet's exact lanes (EmbreeAccelerator::intersectPacket): lane i's
-    /// double ray, interval and best hit are lanes[i]'s; null for single rays.
+    /// A packet's exact lanes (EmbreeAccelerator::intersectPacket): the
+    /// double ray, interval and best hit of the ray whose id is i are
+    /// lanes[i]'s; null for single rays.
     EmbreeQueryContext* lanes = nullptr;
 
     /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
