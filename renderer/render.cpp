@@ -215,18 +215,17 @@ public:
         return stratifiedSample(k, m_n, m_gridSide, m_rng, m_perm.data());
     }
     /// Adds the next sample (in sample order) of pixel i; after the last,
-    /// stores the pixel in the film and returns true.
-    bool add(const Sample& s, Film& film, size_t i, const RenderOptions& opt) {
+    /// stores the pixel in the film.
+    void add(const Sample& s, Film& film, size_t i, const RenderOptions& opt) {
         m_sum += s.c;
         m_hits += s.first.hit;
         // The AOV layers come from the first sample (the centre when spp = 1),
         // the object coverage from all of them.
         if (m_added == 0 && s.first.hit && opt.wantAovs) storeFirstHit(film, i, s.first);
         if (opt.wantAovs) m_mattes.add(int(s.first.objectId), 1.0);
-        if (++m_added < m_n) return false;
+        if (++m_added < m_n) return;
         if (opt.wantAovs) m_mattes.store({film.mattesOf(i), size_t(film.matteRanks)}, double(m_n));
         storePixel(film, i, m_sum / double(m_n), double(m_hits) / m_n, opt.alpha);
-        return true;
     }
 
 private:

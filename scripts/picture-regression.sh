@@ -74,6 +74,10 @@ for c in "${cases[@]}"; do
     # Same relative output name on both sides, so headers that record it match.
     (cd "$work/$side" && "$bin" render "$scene" -o "$name.exr" --quiet $extra $flags $sideFlags \
         >"$name.log" 2>&1) || echo "render failed: $side $name (see $work/$side/$name.log)"
+    # A binary copied without raylab-openimageio.so beside it renders
+    # textured scenes without their images: a difference that is not the code's.
+    grep -q "OpenImageIO is not available" "$work/$side/$name.log" &&
+      echo "warning: $side binary has no raylab-openimageio.so beside it: $name rendered without its textures"
   done
   if "$new" compare "$work/old/$name.exr" "$work/new/$name.exr" >"$work/new/$name.compare" 2>&1; then
     rgba=identical

@@ -45,7 +45,7 @@ public:
     /// as intersect() resolves it: the same answers as intersect(). (Embree
     /// 3.13's packet triangle test gives its single-ray test's t, u, v and
     /// Ng bit for bit: measured on 1.6 M rays aimed at vertices, edges and
-    /// anywhere, SSE4.2/AVX2/AVX-512, robust or not; docs/benchmarks.md.)
+    /// anywhere, SSE2 to AVX-512, robust or not; docs/benchmarks.md.)
     void intersectPacket(const Ray* rays, const double* tMin, const double* tMax, int count,
                          std::optional<Hit>* out) const override;
     bool tracesPackets() const override { return true; }
