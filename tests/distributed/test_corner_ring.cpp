@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "distributed/distributed_test_helpers.h"
+#include "support/forwarding_accelerator.h"
 
 using namespace raylab;
 
@@ -35,31 +36,17 @@ Film wholeGridFilm(const test::PreparedScene& p) {
 
 /// The scene's accelerator, except that its n-th intersect query throws
 /// (an allocation failure deep inside a work item).
-class ThrowingAccelerator final : public Accelerator {
+class ThrowingAccelerator final : public test::ForwardingAccelerator {
 public:
-    ThrowingAccelerator(const Accelerator& inner, long n) : m_inner(inner), m_throwAt(n) {}
+    ThrowingAccelerator(const Accelerator& inner, long n)
+        : ForwardingAccelerator(inner), m_throwAt(n) {}
     std::optional<Hit> intersect(const Ray& r, double a, double b) const override {
         if (++m_calls == m_throwAt) throw std::bad_alloc();
-        return m_inner.intersect(r, a, b);
+        return ForwardingAccelerator::intersect(r, a, b);
     }
-    bool occluded(const Ray& r, double a, double b) const override {
-        return m_inner.occluded(r, a, b);
-    }
-    bool occluded(const Ray& r, double a, double b, OcclusionHint& h) const override {
-        return m_inner.occluded(r, a, b, h);
-    }
-    Color transmittance(const Ray& r, double a, double b) const override {
-        return m_inner.transmittance(r, a, b);
-    }
-    Color transmittance(const Ray& r, double a, double b, OcclusionHint& h) const override {
-        return m_inner.transmittance(r, a, b, h);
-    }
-    std::string name() const override { return m_inner.name(); }
     double buildSeconds() const override { return 0; }
-    FilterCounts filterCounts() const override { return m_inner.filterCounts(); }
 
 private:
-    const Accelerator& m_inner;
     mutable std::atomic<long> m_calls{0};
     long m_throwAt;
 };

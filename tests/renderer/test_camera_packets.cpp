@@ -15,37 +15,11 @@
 #include "renderer/io/scene_loader.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "support/forwarding_accelerator.h"
 
 using namespace raylab;
 
 namespace {
-
-/// The same accelerator, asked one ray at a time.
-class OneRayAtATime final : public Accelerator {
-public:
-    explicit OneRayAtATime(const Accelerator& inner) : m_inner(inner) {}
-    std::optional<Hit> intersect(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.intersect(r, tMin, tMax);
-    }
-    bool occluded(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.occluded(r, tMin, tMax);
-    }
-    bool occluded(const Ray& r, double tMin, double tMax, OcclusionHint& h) const override {
-        return m_inner.occluded(r, tMin, tMax, h);
-    }
-    Color transmittance(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.transmittance(r, tMin, tMax);
-    }
-    Color transmittance(const Ray& r, double tMin, double tMax, OcclusionHint& h) const override {
-        return m_inner.transmittance(r, tMin, tMax, h);
-    }
-    std::string name() const override { return m_inner.name(); }
-    double buildSeconds() const override { return m_inner.buildSeconds(); }
-    FilterCounts filterCounts() const override { return m_inner.filterCounts(); }
-
-private:
-    const Accelerator& m_inner;
-};
 
 template <class Plane>
 bool sameBytes(const Plane& a, const Plane& b) {
@@ -77,7 +51,8 @@ TEST_CASE("camera packets: every film plane and ray count as one ray at a time")
         if (c.crop) options.crop = CropWindow{0.13, 0.71, 0.2, 0.9};
         const auto embree = makeAccelerator("embree", scene, options.accelOptions);
         REQUIRE(embree->tracesPackets());
-        const OneRayAtATime single(*embree);
+        const test::ForwardingAccelerator single(*embree);  // asked one ray at a time
+        REQUIRE_FALSE(single.tracesPackets());
         const EffectSet effects = analyseEffects(scene, options);
         const RenderResult a = render(scene, *embree, options, effects);
         const RenderResult b = render(scene, single, options, effects);
