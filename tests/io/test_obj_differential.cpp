@@ -281,6 +281,16 @@ TEST_CASE("obj differential: the deliberate differences, one by one") {
     for (int i = 1; i <= 300; ++i) big += " " + std::to_string(i);
     d = expect(big + "\n", "face-count-byte");
     CHECK(d.facesCompared == 1);
+    // 0 · 5^990 · 2^990 is NaN in tinyobj's doubles, 10^330 · 10^-330 is ∞;
+    // raylab reads 0 and 1 (a fuzz finding).
+    d = expect(tri + "v 0e990 1 1\nv 1" + std::string(330, '0') + "e-330 1 1\nf 1 2 4 5\n",
+               "decimal-overflow");
+    CHECK(!d.raylabRefused);
+    CHECK(d.facesCompared == 1);
+    // Without such a spelling a non-finite tinyobj number is no excuse: the
+    // text here is plain, so the rule cannot hide a real difference.
+    CHECK(!raylab::test::obj_differential_detail::hasHugeDecimal(tri + "v 1e299 0 0\nv 12.5e-38 0 0\n"));
+    CHECK(raylab::test::obj_differential_detail::hasHugeDecimal("v .0E+300 0 0\n"));
 }
 
 TEST_CASE("obj differential: where tinyobjloader refuses, raylab refuses too") {
