@@ -13,7 +13,8 @@
 #
 # The growing corpus lives in $BUILD/corpus/<target> (seeded from
 # tests/fuzz/corpus/<target>), logs in $BUILD/logs, and crashing inputs in
-# $BUILD/crashes/<target>/. Exits 1 when any target found a crash, leak,
+# $BUILD/crashes/<target>/ (each also replayed for its message and printed in
+# base64, so a CI log alone reproduces it). Exits 1 when any target found a crash, leak,
 # timeout or out-of-memory input; prints execs, exec/s and corpus size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -101,6 +102,18 @@ for t in "${targets[@]}"; do
     status=1
     echo "fuzz_$t: FINDING (input saved under $crashes/):"
     grep -E "ERROR|SUMMARY|finding|deadly|timeout|out-of-memory|uncaught" "$log" | head -10
+    # The run closed stderr (-close_fd_mask=2), which hides the harness's own
+    # message, and a CI machine is gone with its files: replay each saved
+    # input with stderr open for the message, and print the input itself
+    # (base64; at most max_len bytes) so the log alone reproduces it.
+    for f in "$crashes"/*; do
+      [[ -f "$f" ]] || continue
+      echo "--- $(basename "$f"): replayed"
+      "$exe" -timeout=10 -rss_limit_mb=2048 "$f" 2>&1 |
+        grep -E "raylab fuzz finding|ERROR: |SUMMARY: " | head -5 || true
+      echo "--- $(basename "$f"): the input, base64 (base64 -d > input; $exe input)"
+      base64 -w 100 "$f" | head -80
+    done
   fi
   fuzzstat() { grep -Eo "stat::$1: +[0-9]+" "$log" | grep -Eo '[0-9]+$' || echo "?"; }
   execs=$(fuzzstat number_of_executed_units)
