@@ -56,12 +56,20 @@ PolygonGrid::PolygonGrid(const std::vector<Vec2>& vertices, FillRule rule, doubl
     m_cellH = h / m_ny;
     m_invCellW = m_nx / w;
     m_invCellH = m_ny / h;
-    m_cells.assign(size_t(m_nx) * size_t(m_ny), Cell::Outside);
-    markEdges(vertices);
-    classifyRows(vertices, rule);
+    // Built a byte a cell, then packed.
+    std::vector<Cell> grid(size_t(m_nx) * size_t(m_ny), Cell::Outside);
+    markEdges(vertices, grid);
+    classifyRows(vertices, rule, grid);
+    m_packed.assign((grid.size() + kCellsPerByte - 1) / kCellsPerByte, 0);
+    size_t edge = 0;
+    for (size_t k = 0; k < grid.size(); ++k) {
+        m_packed[k / kCellsPerByte] |= uint8_t(unsigned(grid[k]) << (2 * (k % kCellsPerByte)));
+        edge += grid[k] == Cell::Edge;
+    }
+    m_edgeFraction = double(edge) / double(grid.size());
 }
 
-void PolygonGrid::markEdges(const std::vector<Vec2>& vertices) {
+void PolygonGrid::markEdges(const std::vector<Vec2>& vertices, std::vector<Cell>& cells) const {
     // A cell is marked when an edge meets it grown by twice the clearance:
     // the unmarked ones then keep the clearance with room to spare for the
     // rounding of this test and of the query's cell index.
@@ -86,7 +94,7 @@ void PolygonGrid::markEdges(const std::vector<Vec2>& vertices) {
         const bool oneBox = i1 - i0 <= 1 && j1 - j0 <= 1;
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
-                Cell& c = m_cells[size_t(j) * size_t(m_nx) + size_t(i)];
+                Cell& c = cells[size_t(j) * size_t(m_nx) + size_t(i)];
                 if (c == Cell::Edge) continue;
                 // Within a 2x2 block the cells the box touches are the ones
                 // to mark (the box is conservative); a longer edge is clipped
@@ -99,7 +107,8 @@ void PolygonGrid::markEdges(const std::vector<Vec2>& vertices) {
     }
 }
 
-void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule) {
+void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
+                               std::vector<Cell>& cells) const {
     // For each row, the edges crossing the horizontal line through its cell
     // centres (half-open rule: an upward edge includes its start, excludes its
     // end), sorted by x; a centre's winding number is the signed count of
@@ -137,7 +146,7 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule)
                 winding += row[right].second;
                 ++count;
             }
-            Cell& c = m_cells[size_t(j) * size_t(m_nx) + size_t(i)];
+            Cell& c = cells[size_t(j) * size_t(m_nx) + size_t(i)];
             if (c == Cell::Edge) continue;
             const bool inside = rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
             c = inside ? Cell::Inside : Cell::Outside;
@@ -145,10 +154,6 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule)
     }
 }
 
-double PolygonGrid::edgeFraction() const {
-    size_t edge = 0;
-    for (Cell c : m_cells) edge += c == Cell::Edge;
-    return double(edge) / double(m_cells.size());
-}
+double PolygonGrid::edgeFraction() const { return m_edgeFraction; }
 
 }  // namespace raylab

@@ -141,6 +141,40 @@ TEST_CASE("polygon grid: cells of a subdivided square agree with the square") {
     CHECK(grid.edgeFraction() < 0.25);
 }
 
+TEST_CASE("polygon grid: every cell keeps its state in the two-bit packing, at any grid size") {
+    // Cells are stored four to a byte: grids whose cell count is not a
+    // multiple of four, and rows that start inside a byte, must read back
+    // each cell's own state. An L-shaped hexagon under a fine point scan,
+    // checked against the exact answer wherever the grid claims one.
+    const std::vector<Vec2> ell{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}};
+    const auto inside = [](double x, double y) {
+        return x > 0 && y > 0 && ((x < 3 && y < 1) || (x < 1 && y < 2));
+    };
+    int unevenGrids = 0;  // cell counts that leave a partly filled last byte
+    for (const int cells : {1, 2, 3, 5, 7, 13, 35, 51, 97, 1000}) {
+        CAPTURE(cells);
+        const PolygonGrid grid(ell, FillRule::NonZero, 1e-4, cells);
+        unevenGrids += grid.columns() * grid.rows() % 4 != 0;
+        int decided = 0, states[3] = {0, 0, 0};
+        for (double y = -0.13; y < 2.2; y += 0.0137)
+            for (double x = -0.11; x < 3.2; x += 0.0119) {
+                const PolygonGrid::Cell c = grid.at(x, y);
+                ++states[int(c)];
+                if (c == PolygonGrid::Cell::Edge) continue;
+                ++decided;
+                CHECK((c == PolygonGrid::Cell::Inside) == inside(x, y));
+            }
+        CHECK(states[int(PolygonGrid::Cell::Edge)] > 0);
+        if (cells >= 35) {
+            // Fine enough for whole cells inside and outside the L.
+            CHECK(states[int(PolygonGrid::Cell::Inside)] > 0);
+            CHECK(states[int(PolygonGrid::Cell::Outside)] > 0);
+            CHECK(decided > 0);
+        }
+    }
+    CHECK(unevenGrids >= 3);
+}
+
 TEST_CASE("polygon grid: the gear face answers exactly as the watertight test") {
     const auto gear = makeGridPolygon(gearFace(), FillRule::EvenOdd);
     REQUIRE(gear->grid() != nullptr);
