@@ -105,14 +105,14 @@ for t in "${targets[@]}"; do
     # The run closed stderr (-close_fd_mask=2), which hides the harness's own
     # message, and a CI machine is gone with its files: replay each saved
     # input with stderr open for the message, and print the input itself
-    # (base64; at most max_len bytes) so the log alone reproduces it.
+    # (base64, whole: at most max_len bytes) so the log alone reproduces it.
     for f in "$crashes"/*; do
       [[ -f "$f" ]] || continue
       echo "--- $(basename "$f"): replayed"
       "$exe" -timeout=10 -rss_limit_mb=2048 "$f" 2>&1 |
         grep -E "raylab fuzz finding|ERROR: |SUMMARY: " | head -5 || true
       echo "--- $(basename "$f"): the input, base64 (base64 -d > input; $exe input)"
-      base64 -w 100 "$f" | head -80
+      base64 -w 100 "$f"
     done
   fi
   fuzzstat() { grep -Eo "stat::$1: +[0-9]+" "$log" | grep -Eo '[0-9]+$' || echo "?"; }
