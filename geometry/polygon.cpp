@@ -171,16 +171,17 @@ Vec3 newellNormal(const std::vector<Vec3>& vertices) {
 
 Polygon::Polygon(std::vector<Vec3> vertices, std::vector<Vec3> normals, const Vec3& normal,
                  const Vec3& centroid, double deviation, FillRule rule, PolygonTest test)
-    : m_vertices(std::move(vertices)),
-      m_normals(std::move(normals)),
-      m_frame(Frame::fromNormal(normal)),
+    : m_frame(Frame::fromNormal(normal)),
       m_centroid(centroid),
-      m_uvFrame(uvFrame(m_vertices, normal)),
-      m_dropAxis(dominantAxis(normal)),
-      m_deviation(deviation),
       m_radius(0),
+      m_deviation(deviation),
+      m_count(vertices.size()),
       m_rule(rule),
-      m_test(test) {
+      m_test(test),
+      m_vertices(std::move(vertices)),
+      m_normals(std::move(normals)),
+      m_uvFrame(uvFrame(m_vertices, normal)),
+      m_dropAxis(dominantAxis(normal)) {
     const size_t n = m_vertices.size();
     m_coords.resize(3 * n);
     m_coordsF.resize(3 * n);
@@ -350,12 +351,12 @@ bool Polygon::accepts(int winding, int crossings) const {
 
 template <>
 const double* Polygon::coords<double>(int axis) const {
-    return m_coords.data() + size_t(axis) * m_vertices.size();
+    return m_coords.data() + size_t(axis) * m_count;
 }
 
 template <>
 const float* Polygon::coords<float>(int axis) const {
-    return m_coordsF.data() + size_t(axis) * m_vertices.size();
+    return m_coordsF.data() + size_t(axis) * m_count;
 }
 
 template <class T>
@@ -366,7 +367,7 @@ bool Polygon::insideProjected(const Vec3T<T>& p) const {
     const T px = p[(m_dropAxis + 1) % 3];
     const T py = p[(m_dropAxis + 2) % 3];
     int winding = 0, crossings = 0;
-    const size_t n = m_vertices.size();
+    const size_t n = m_count;
     T ax = X[n - 1], ay = Y[n - 1];
     for (size_t i = 0; i < n; ++i) {
         const T bx = X[i], by = Y[i];
@@ -505,7 +506,7 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d, bool chunkB
     };
     // Origin perturbed to (+εx, +εy): a vertex at y == 0 counts as below, and
     // only an edge with one end above and one below can cross the x axis.
-    const size_t n = m_vertices.size();
+    const size_t n = m_count;
     if (n < kMaskMinVertices) {
         T ax, ay;
         shear(n - 1, ax, ay);

@@ -142,29 +142,35 @@ private:
         std::array<std::vector<float>, 3> loF, hiF;
     };
 
-    std::vector<Vec3> m_vertices;
+    // Members in the order a ray query reads them: the plane, the grid and
+    // the coordinate runs first, so a polygon test touches the object's
+    // first three cache lines, not seven (SPD gears: 9,345 polygons of
+    // ~400 bytes, most tests a cache miss away).
+    Frame m_frame;      ///< n = unit Newell normal
+    Vec3 m_centroid;    ///< vertex mean: the plane's reference point
+    /// Exact filter in front of the watertight test (polygons with many
+    /// vertices only; null otherwise).
+    std::unique_ptr<const PolygonGrid> m_grid;
+    double m_radius;     ///< largest vertex distance from the centroid
+    double m_deviation;  ///< largest vertex distance from the plane
     /// x of every vertex, then y, then z (one allocation: SPD gears has
     /// 9,217 quads, and three vectors per precision were a third of a quad's
     /// memory, docs/benchmarks.md "Fresh memory").
     std::vector<double> m_coords;
-    std::vector<float> m_coordsF;  ///< the same, rounded to float
+    size_t m_count;  ///< vertices (m_vertices.size(), kept here with the hot members)
     /// Polygons with many vertices only (null otherwise).
     std::unique_ptr<const ChunkBoxes> m_chunks;
+    FillRule m_rule;
+    PolygonTest m_test;
+    // Read by shading, the float path and construction.
+    std::vector<float> m_coordsF;  ///< m_coords rounded to float
+    std::vector<Vec3> m_vertices;
     std::vector<Vec3> m_normals;                  ///< unit per-vertex shading normals, or empty
-    Frame m_frame;                                ///< n = unit Newell normal
-    Vec3 m_centroid;                              ///< vertex mean: the plane's reference point
     Bounds3 m_bounds;
     Frame m_uvFrame;  ///< t along the first edge, b = n × t: the (u, v) axes
     Vec2 m_uvOrigin;  ///< lower-left corner of the bounding rectangle in (t, b)
     Vec2 m_uvSize;    ///< its extent along t and b
     int m_dropAxis;  ///< dominant axis of the normal (Projected test)
-    double m_deviation;  ///< largest vertex distance from the plane
-    double m_radius;     ///< largest vertex distance from the centroid
-    /// Exact filter in front of the watertight test (polygons with many
-    /// vertices only; null otherwise).
-    std::unique_ptr<const PolygonGrid> m_grid;
-    FillRule m_rule;
-    PolygonTest m_test;
 };
 
 }  // namespace raylab
