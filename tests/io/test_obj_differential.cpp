@@ -289,8 +289,9 @@ TEST_CASE("obj differential: the deliberate differences, one by one") {
     CHECK(d.facesCompared == 1);
     // Without such a spelling a non-finite tinyobj number is no excuse: the
     // text here is plain, so the rule cannot hide a real difference.
-    CHECK(!raylab::test::obj_differential_detail::hasHugeDecimal(tri + "v 1e299 0 0\nv 12.5e-38 0 0\n"));
-    CHECK(raylab::test::obj_differential_detail::hasHugeDecimal("v .0E+300 0 0\n"));
+    using raylab::test::obj_differential_detail::hasHugeDecimal;
+    CHECK(!hasHugeDecimal(tri + "v 1e299 0 0\nv 12.5e-38 0 0\n"));
+    CHECK(hasHugeDecimal("v .0E+300 0 0\n"));
 }
 
 TEST_CASE("obj differential: where tinyobjloader refuses, raylab refuses too") {
