@@ -27,6 +27,16 @@ public:
                    : self().template intersectT<double>(ray, tMin, tMax, opt);
     }
 
+    /// intersect(...).has_value(), computed as intersect computes it, but
+    /// without the second virtual call and with the hit's u, v left out
+    /// where the compiler sees them unused (a shadow feeler needs neither).
+    bool occluded(uint32_t, const Ray& ray, double tMin, double tMax,
+                  const IntersectOptions& opt) const final {
+        return opt.precision == Precision::Float
+                   ? self().template intersectT<float>(ray, tMin, tMax, opt).has_value()
+                   : self().template intersectT<double>(ray, tMin, tMax, opt).has_value();
+    }
+
     std::optional<PrimitiveHit> intersectAny(const Ray& ray, double tMin, double tMax,
                                              const IntersectOptions& opt) const final {
         if (const auto h = intersect(0, ray, tMin, tMax, opt)) return PrimitiveHit{0, *h};
