@@ -3,6 +3,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <tbb/global_control.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include <system_error>
 #include <utility>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -139,7 +142,8 @@ const char* const kRenderHelp =
     "                           even with vn; smooth: the file's vn, else averaged over the mesh\n"
     "\n"
     "performance and accuracy:\n"
-    "  --threads N              worker threads (default: all cores); the image does not depend on it\n"
+    "  --threads N              threads of the whole command: loading, build, render and output\n"
+    "                           (default: all cores); the image does not depend on it\n"
     "  --accel embree|naive     Embree BVH (default) or the textbook loop over all objects\n"
     "  --bvh-quality low|medium|high   Embree build quality (default medium)\n"
     "  --robust, --no-robust    Embree's robust traversal, watertight on triangle edges (default),\n"
@@ -439,6 +443,15 @@ int renderCommand(const std::vector<std::string>& args) {
     // Under mpirun every rank runs this function: MPI starts here (never in
     // a plain run), all ranks render shares of each frame, rank 0 writes.
     const MpiSession mpi;
+    // --threads N holds for the whole command, not only the render: loading,
+    // the accelerator build and the output use at most N threads as well
+    // (under mpirun the distributed renderer sets its own). Kept to the end
+    // of the process (releaseAtExit below): lifting the limit makes TBB
+    // start a worker that no work needs.
+    std::unique_ptr<tbb::global_control> threadLimit;
+    if (cli.overrides.threads && !mpi.active())
+        threadLimit = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, size_t(*cli.overrides.threads));
 
     auto t0 = Clock::now();
     const InputFileLog inputs;  // every file read from here on (input_files.h)
@@ -633,6 +646,7 @@ int renderCommand(const std::vector<std::string>& args) {
     // kernel with the process, not block by block (exit_keep.h).
     releaseAtExit(std::move(accel));
     releaseAtExit(std::move(scene));
+    releaseAtExit(std::move(threadLimit));
     // A signal after the last commit still ends as interrupted (its line says
     // the files were written): a stop request is never ignored.
     if (cancelRequested() && mpi.isRoot()) return reportInterrupted();
