@@ -10,7 +10,10 @@ every command once, in an order that rotates between rounds, after one untimed
 warm-up of each. Prints, per binary and thread count, the medians of the
 process's wall-clock time, its CPU time (user + system), and raylab's own
 --stats phases (render, write), the speed-up of the wall time against the
-first thread count, and the write as a share of the render. --nice N: each
+first thread count, and the write as a share of the render; then the same
+speed-up round by round (each round's first-count run against its N-thread
+run), median and range: less exposed to the machine's drift than the ratio of
+two medians, and its range shows how far one run can be trusted. --nice N: each
 command in a session of its own at niceness N (see scripts/bench-povray.py:
 plain nice does not help against other sessions' jobs), set from this script
 right after the spawn so that the spawn stays a cheap vfork. A benchmark, not a
@@ -107,6 +110,13 @@ def main():
             base = base or wall
             print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f× | %.0f%% |"
                   % (b, t, wall, cpu, ren, wr, base / wall, 100 * wr / ren))
+    print()
+    for b in binaries:
+        first = samples[(b, threads[0])]
+        for t in threads[1:]:
+            ratios = sorted(f[0] / x[0] for f, x in zip(first, samples[(b, t)]))
+            print("%s, %d -> %d threads, wall speed-up round by round: median %.2f× (%.2f–%.2f×)"
+                  % (b, threads[0], t, med(ratios), ratios[0], ratios[-1]))
     return 0
 
 
