@@ -27,14 +27,12 @@ public:
                    : self().template intersectT<double>(ray, tMin, tMax, opt);
     }
 
-    /// intersect(...).has_value(), computed as intersect computes it, but
-    /// without the second virtual call and with the hit's u, v left out
-    /// where the compiler sees them unused (a shadow feeler needs neither).
-    bool occluded(uint32_t, const Ray& ray, double tMin, double tMax,
+    /// Shape::occluded's answer, without its second virtual call: intersect
+    /// is final here, so this call is direct and inlined, and the hit's u, v
+    /// are left out where the compiler sees them unused (a feeler needs neither).
+    bool occluded(uint32_t prim, const Ray& ray, double tMin, double tMax,
                   const IntersectOptions& opt) const final {
-        return opt.precision == Precision::Float
-                   ? self().template intersectT<float>(ray, tMin, tMax, opt).has_value()
-                   : self().template intersectT<double>(ray, tMin, tMax, opt).has_value();
+        return intersect(prim, ray, tMin, tMax, opt).has_value();
     }
 
     std::optional<PrimitiveHit> intersectAny(const Ray& ray, double tMin, double tMax,
