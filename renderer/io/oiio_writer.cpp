@@ -7,7 +7,7 @@
 
 #include "renderer/io/errors.h"
 #include "renderer/io/image_module_loader.h"
-#include "renderer/io/png_writer.h"
+#include "renderer/io/png_memory.h"
 
 namespace raylab {
 
@@ -78,12 +78,7 @@ void writeOiioImage(const std::string& path, const Film& film, OutputFormat form
     std::vector<uint8_t> bytes;
     std::vector<float> floats;
     if (eightBit) {
-        bytes.resize(n * 3);
-        for (size_t i = 0; i < n; ++i) {
-            const float* c = &film.rgba[4 * i];
-            const auto rgb = toneMapSrgb8(c[0], c[1], c[2], exposure);
-            std::copy(rgb.begin(), rgb.end(), bytes.begin() + std::ptrdiff_t(3 * i));
-        }
+        bytes = toneMappedImage(film, exposure).pixels;
         attributes.push_back({"oiio:ColorSpace", "sRGB"});
         attributes.push_back({"Compression", "jpeg:95"});
         request.pixels = bytes.data();

@@ -7,12 +7,15 @@
 
 #include "renderer/film.h"
 #include "renderer/io/atomic_file.h"
+#include "shading/srgb.h"  // linearToSrgb: 12.92·v up to 0.0031308, else 1.055·v^(1/2.4) − 0.055
 
 namespace raylab {
 
-/// \brief The sRGB transfer function (IEC 61966-2-1) on a linear value in [0, 1]:
-/// 12.92·v for v <= 0.0031308, else 1.055·v^(1/2.4) − 0.055.
-double linearToSrgb(double v);
+/// \brief One channel's 8-bit sRGB code: c·scale clamped to [0, 1], encoded
+/// with linearToSrgb and rounded half up to 0..255; 0 for NaN (before or
+/// after scaling), 255 for +Inf. The definition every 8-bit output follows;
+/// Srgb8Encoder (srgb8_encoder.h) gives the same codes faster.
+uint8_t srgb8Code(float c, double scale);
 
 /// \brief Maps one linear RGB colour to 8-bit sRGB.
 ///
@@ -22,7 +25,8 @@ double linearToSrgb(double v);
 std::array<uint8_t, 3> toneMapSrgb8(float r, float g, float b, double exposure);
 
 /// \brief Writes the RGB of `film` as an 8-bit RGB PNG (toneMapSrgb8 per
-/// pixel, row 0 at the top, sRGB chunk), atomically. Alpha is not written.
+/// pixel, row 0 at the top, sRGB chunk; encodePng, png_memory.h),
+/// atomically. Alpha is not written.
 /// \throws InputError(path, 0, reason) when the film is empty or inconsistent
 ///         or the file cannot be written; `path` is then left untouched.
 /// With `group`, the file is staged in it and appears at group->commit().

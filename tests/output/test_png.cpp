@@ -3,11 +3,14 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <random>
+#include <utility>
 #include <vector>
 
 #include <png.h>
 
 #include "renderer/io/errors.h"
+#include "renderer/io/png_memory.h"
 #include "renderer/io/png_writer.h"
 #include "support/temp_dir.h"
 
@@ -141,4 +144,82 @@ TEST_CASE("png: exposure is applied in the file, errors are InputErrors") {
     }
     CHECK_THROWS_AS(writePng(dir.file("empty.png"), Film()), InputError);
     CHECK(dir.entries() == std::vector<std::string>{"e.png"});
+}
+
+namespace {
+
+/// The RGB pixels libpng decodes from PNG bytes (libpng checks every
+/// chunk's CRC-32 and the zlib stream's Adler-32 on the way).
+std::vector<uint8_t> decodeWithLibpng(const std::vector<unsigned char>& bytes, int& w, int& h) {
+    png_image image;
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()));
+    image.format = PNG_FORMAT_RGB;
+    w = int(image.width);
+    h = int(image.height);
+    std::vector<uint8_t> px(PNG_IMAGE_SIZE(image));
+    const bool ok = png_image_finish_read(&image, nullptr, px.data(), 0, nullptr);
+    if (!ok) FAIL("libpng: ", image.message);
+    return px;
+}
+
+}  // namespace
+
+TEST_CASE("png: encodePng round-trips through libpng (noise, gradients, 1x1, strips)") {
+    std::mt19937 rng(7);
+    const std::pair<int, int> sizes[] = {{1, 1}, {1, 300}, {777, 2}, {64, 48}, {257, 129}};
+    for (const auto& [w, h] : sizes) {
+        for (int pattern = 0; pattern < 3; ++pattern) {
+            CAPTURE(w);
+            CAPTURE(h);
+            CAPTURE(pattern);
+            Rgb8Image image;
+            image.width = w;
+            image.height = h;
+            image.pixels.resize(size_t(w) * size_t(h) * 3);
+            for (size_t i = 0; i < image.pixels.size(); ++i) {
+                const size_t x = (i / 3) % size_t(w), y = (i / 3) / size_t(w);
+                image.pixels[i] = pattern == 0   ? uint8_t(rng())                // incompressible
+                                  : pattern == 1 ? uint8_t(x * 3 + y * 5 + i % 3)  // smooth: Paeth's case
+                                                 : uint8_t(255 * ((x / 7 + y / 5) % 2));  // hard edges
+            }
+            const std::vector<unsigned char> bytes = encodePng(image);
+            int dw = 0, dh = 0;
+            CHECK(decodeWithLibpng(bytes, dw, dh) == image.pixels);
+            CHECK(dw == w);
+            CHECK(dh == h);
+            // Chunks in order, the sRGB chunk marking the samples as sRGB.
+            const std::string s(bytes.begin(), bytes.end());
+            CHECK(s.compare(12, 4, "IHDR") == 0);
+            CHECK(s.compare(37, 4, "sRGB") == 0);
+            CHECK(s.compare(50, 4, "IDAT") == 0);
+            CHECK(s.compare(s.size() - 8, 4, "IEND") == 0);
+        }
+    }
+    Rgb8Image bad;
+    CHECK_THROWS_AS(encodePng(bad), std::runtime_error);
+    bad.width = bad.height = 2;
+    bad.pixels.resize(11);
+    CHECK_THROWS_AS(encodePng(bad), std::runtime_error);
+}
+
+TEST_CASE("png: toneMappedImage is toneMapSrgb8 at every pixel, any exposure") {
+    Film film(67, 45);  // several row blocks of the parallel encoder, a ragged last one
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> value(-0.1f, 1.3f);
+    for (float& v : film.rgba) v = value(rng);
+    film.rgba[0] = std::numeric_limits<float>::infinity();
+    film.rgba[1] = std::numeric_limits<float>::quiet_NaN();
+    for (const double exposure : {0.0, 0.7, -2.0}) {
+        const Rgb8Image image = toneMappedImage(film, exposure);
+        REQUIRE(image.pixels.size() == 67u * 45u * 3u);
+        size_t differ = 0;
+        for (size_t i = 0; i < 67u * 45u; ++i) {
+            const float* c = &film.rgba[4 * i];
+            const auto rgb = toneMapSrgb8(c[0], c[1], c[2], exposure);
+            if (std::memcmp(rgb.data(), &image.pixels[3 * i], 3) != 0) ++differ;
+        }
+        CHECK(differ == 0);
+    }
 }

@@ -1,0 +1,54 @@
+#include "renderer/io/srgb8_encoder.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "renderer/io/png_writer.h"
+
+namespace raylab {
+
+uint32_t Srgb8Encoder::bitsOf(float c) {
+    uint32_t bits;
+    std::memcpy(&bits, &c, sizeof bits);
+    return bits;
+}
+
+Srgb8Encoder::Srgb8Encoder(double exposure) {
+    const double scale = std::exp2(exposure);  // as toneMapSrgb8 scales
+    const auto codeOfBits = [scale](uint32_t bits) {
+        float c;
+        std::memcpy(&c, &bits, sizeof c);
+        return srgb8Code(c, scale);
+    };
+    // m_firstOf[k]: the first bits in [0, +Inf] with a code >= k, by
+    // bisection (the codes do not decrease along the bits, see the header);
+    // kNever when even +Inf has a lower code (a scale of 0, say).
+    m_firstOf[0] = 0;
+    for (unsigned k = 1; k < 256; ++k) {
+        uint32_t lo = m_firstOf[k - 1], hi = kNever;  // code(lo - 1) < k <= code(hi)
+        while (lo < hi) {
+            const uint32_t mid = lo + (hi - lo) / 2;
+            if (codeOfBits(mid) >= k) hi = mid;
+            else lo = mid + 1;
+        }
+        m_firstOf[k] = lo;
+    }
+    // The code at the first float of every slice up to +Inf's.
+    m_sliceStart.resize((kPositiveInfinity >> kSliceShift) + 1);
+    unsigned code = 0;
+    for (size_t s = 0; s < m_sliceStart.size(); ++s) {
+        const uint32_t first = uint32_t(s) << kSliceShift;
+        while (code < 255 && first >= m_firstOf[code + 1]) ++code;
+        m_sliceStart[s] = uint8_t(code);
+    }
+}
+
+void Srgb8Encoder::encodeRgba(const float* rgba, size_t count, uint8_t* rgb) const {
+    for (size_t i = 0; i < count; ++i) {
+        rgb[3 * i + 0] = (*this)(rgba[4 * i + 0]);
+        rgb[3 * i + 1] = (*this)(rgba[4 * i + 1]);
+        rgb[3 * i + 2] = (*this)(rgba[4 * i + 2]);
+    }
+}
+
+}  // namespace raylab
