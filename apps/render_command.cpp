@@ -5,6 +5,7 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -468,6 +469,15 @@ int renderCommand(const std::vector<std::string>& args) {
     stats.parseSeconds = secondsSince(t0);
 
     RenderOptions options = resolveRenderOptions(scene, cli.overrides);
+    // Only an EXR carries the AOV layers (depth, normal, albedo, objectId,
+    // Cryptomatte): for PNG, JPEG, HDR or TIFF alone none is computed and the
+    // film is RGBA alone (16 of an SPD film's 84 bytes per pixel). Under
+    // mpirun the layers stay: the ranks' messages carry them.
+    options.wantAovs = mpi.active() || std::any_of(cli.images.begin(), cli.images.end(),
+                                                   [](const OutputFlag& image) {
+                                                       return outputFormatOf(image.path) ==
+                                                              OutputFormat::Exr;
+                                                   });
     if (cli.crop) {
         options.crop = *cli.crop;
         const PixelWindow w = cropPixels(options.crop, options.width, options.height);

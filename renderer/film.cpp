@@ -8,7 +8,7 @@
 
 namespace raylab {
 
-Film::Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks)
+Film::Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks, bool aovs)
     : width(w),
       height(h),
       originX(x0),
@@ -19,11 +19,12 @@ Film::Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks)
     const size_t n = size_t(w) * size_t(h);
     // Every plane's slot in one mapping (plane_arena.h), sized for and taken
     // by these reservations in a fixed order; the tasks below then fill the
-    // planes without reallocating.
-    const std::pair<FilmPlane*, size_t> planes[] = {{&rgba, n * 4},   {&z, n},
-                                                    {&distance, n},   {&normal, n * 3},
-                                                    {&albedo, n * 3}, {&objectId, n}};
-    const size_t matteCount = n * size_t(matteRanks);
+    // planes without reallocating. Without AOVs the other planes stay empty.
+    const size_t a = aovs ? n : 0;
+    const std::pair<FilmPlane*, size_t> planes[] = {{&rgba, n * 4},   {&z, a},
+                                                    {&distance, a},   {&normal, a * 3},
+                                                    {&albedo, a * 3}, {&objectId, a}};
+    const size_t matteCount = a * size_t(matteRanks);
     size_t bytes = PlaneArena::slot(matteCount * sizeof(MatteEntry));
     for (const auto& [plane, size] : planes) bytes += PlaneArena::slot(size * sizeof(float));
     const auto arena = std::make_shared<PlaneArena>(bytes);
@@ -34,11 +35,11 @@ Film::Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks)
     mattes = decltype(mattes)(PlaneAllocator<MatteEntry>(arena));
     mattes.reserve(matteCount);
     tbb::parallel_invoke([&] { rgba.assign(n * 4, 0.f); },
-                         [&] { z.assign(n, kNoHitDepth); },
-                         [&] { distance.assign(n, kNoHitDepth); },
-                         [&] { normal.assign(n * 3, 0.f); },
-                         [&] { albedo.assign(n * 3, 0.f); },
-                         [&] { objectId.assign(n, -1.f); },
+                         [&] { z.assign(a, kNoHitDepth); },
+                         [&] { distance.assign(a, kNoHitDepth); },
+                         [&] { normal.assign(a * 3, 0.f); },
+                         [&] { albedo.assign(a * 3, 0.f); },
+                         [&] { objectId.assign(a, -1.f); },
                          [&] { mattes.assign(matteCount, MatteEntry{}); });
 }
 

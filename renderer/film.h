@@ -65,7 +65,14 @@ struct Film {
     /// frame's first touch of its film is not one core's serial pass before
     /// the render.
     /// `ranks`: matteRanks (clamped to 1..kMatteRanks).
-    Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks = kMatteRanks);
+    /// `aovs` false: RGBA alone, every other plane empty, for a render whose
+    /// outputs carry no layer (RenderOptions::wantAovs): an SPD film is then
+    /// 16 bytes per pixel instead of 84.
+    Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks = kMatteRanks,
+         bool aovs = true);
+
+    /// Whether the AOV planes (z to mattes) are there.
+    bool hasAovs() const { return !z.empty(); }
 
     /// Pixel i's first entry of `matteRanks`.
     MatteEntry* mattesOf(size_t i) { return mattes.data() + i * size_t(matteRanks); }

@@ -324,7 +324,7 @@ int FrameRenderer::workItemCount() const {
 FrameBuffers FrameRenderer::makeBuffers(int cornerRing) const {
     FrameBuffers b;
     b.film = Film(m_window.width(), m_window.height(), m_window.x0, m_window.y0, m_options.width,
-                  m_options.height, matteRanksOfSampling(m_options));
+                  m_options.height, matteRanksOfSampling(m_options), m_options.wantAovs);
     if (m_options.spd) {
         b.cornerX0 = m_window.x0;
         b.cornerY0 = m_window.y0;

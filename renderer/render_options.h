@@ -51,7 +51,9 @@ struct RenderOptions {
 
     bool spd = false;          ///< Haines' SPD testing procedure (corner rays, zero-weight rays traced)
     bool forceAllEffects = false;  ///< the general kernel: every ray type at every hit (--effects all)
-    bool wantAovs = true;      ///< depth/normal/albedo/objectId layers are filled
+    /// depth/normal/albedo/objectId/Cryptomatte layers are computed and the
+    /// film has their planes (render: only when an output is an EXR)
+    bool wantAovs = true;
     CropWindow crop;           ///< --crop: only these pixels are rendered (the film is the crop)
 };
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Two or more raylab binaries on one render, whole process, interleaved (issue 20).
 
-    scripts/bench-ab.py [--rounds 15] [--pause 0.2] BINARY BINARY [...] -- SCENE [render flags]
+    scripts/bench-ab.py [--rounds 15] [--pause 0.2] [--output exr] BINARY BINARY [...] -- SCENE [render flags]
 
-Each round runs `BINARY render SCENE [flags] -o OUT.exr --quiet` once with
+Each round runs `BINARY render SCENE [flags] -o OUT.exr --quiet` (--output
+png: OUT.png, the 8-bit output alone; any extension raylab writes) once with
 every binary, the order reversed every other round, --pause seconds apart
 (fresh memory costs differ with how long the machine has been idle:
 docs/benchmarks.md). Prints each binary's median wall-clock time and CPU time
@@ -34,10 +35,11 @@ def run_once(argv):
 
 def main():
     parser = argparse.ArgumentParser(
-        usage="bench-ab.py [--rounds N] [--pause S] BINARY BINARY [...] -- SCENE [render flags]",
+        usage="bench-ab.py [--rounds N] [--pause S] [--output EXT] BINARY BINARY [...] -- SCENE [render flags]",
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rounds", type=int, default=15)
     parser.add_argument("--pause", type=float, default=0.2)
+    parser.add_argument("--output", default="exr", help="the output's extension (exr, png, ...)")
     parser.add_argument("binaries", nargs="+")
     split = sys.argv.index("--") if "--" in sys.argv else len(sys.argv)
     args = parser.parse_args(sys.argv[1:split])
@@ -45,7 +47,7 @@ def main():
     if len(args.binaries) < 2 or not render:
         sys.exit("bench-ab: give two binaries or more, and a scene after --")
     with tempfile.TemporaryDirectory() as work:
-        out = os.path.join(work, "out.exr")
+        out = os.path.join(work, "out." + args.output)
         # Keyed by position: the same binary may be given twice (an A/A check of the noise).
         indices = list(range(len(args.binaries)))
         wall = {i: [] for i in indices}
@@ -56,8 +58,8 @@ def main():
                 wall[i].append(w)
                 cpu[i].append(c)
                 time.sleep(args.pause)
-    print("raylab render %s; %d interleaved rounds, %.1f s apart" %
-          (" ".join(render), args.rounds, args.pause))
+    print("raylab render %s -o OUT.%s; %d interleaved rounds, %.1f s apart" %
+          (" ".join(render), args.output, args.rounds, args.pause))
     print("| binary | wall median s | CPU median s | first ÷ this, wall, per round | CPU, per round |")
     print("|---|---:|---:|---:|---:|")
     for i, binary in enumerate(args.binaries):

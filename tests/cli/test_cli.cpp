@@ -214,3 +214,34 @@ TEST_CASE("cli: --compression writes the same picture in every scheme") {
         CHECK(cli::run("compare " + first + " " + out).exitCode == 0);
     }
 }
+
+TEST_CASE("cli: without an EXR output no AOV layer is computed, and every pixel is the same") {
+    // The layers (depth, normal, albedo, objectId, Cryptomatte) are computed
+    // only for an EXR: a PNG alone comes from an RGBA-only film. Its bytes
+    // must equal the PNG written beside an EXR, on every sampling path.
+    cli::TempDir dir;
+    const std::string json = dir.write("tiny.json", kTinyScene);
+    const std::string nff = dir.write("tiny.nff",
+                                      "v\nfrom 0 1 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\n"
+                                      "resolution 20 14\nb 0.1 0.2 0.3\nl 2 4 3\n"
+                                      "f 0.8 0.1 0.1 0.7 0.3 20 0.4 1.5\ns 0 0 0 1\n"
+                                      "f 0.2 0.8 0.2 1 0 1 0 0\np 4\n-3 -1 -3\n3 -1 -3\n3 -1 3\n-3 -1 3\n");
+    const std::pair<std::string, std::string> cases[] = {
+        {json, ""}, {json, "--spp 4"}, {json, "--adaptive 0.05"}, {json, "--crop 0.2,0.7,0.1,0.9"},
+        {nff, "--spd"}, {nff, "--spd --crop 0.3,1,0,0.5"}};
+    int k = 0;
+    for (const auto& [scene, flags] : cases) {
+        CAPTURE(flags);
+        const std::string n = std::to_string(k++);
+        const std::string both = "render " + scene + " " + flags + " --quiet -o " + dir.file(n + ".exr") +
+                                 " --png " + dir.file(n + "a.png") + " --stats " + dir.file(n + "a.json");
+        const std::string alone = "render " + scene + " " + flags + " --quiet -o " + dir.file(n + "b.png") +
+                                  " --stats " + dir.file(n + "b.json");
+        REQUIRE(cli::run(both).exitCode == 0);
+        REQUIRE(cli::run(alone).exitCode == 0);
+        CHECK(cli::readFile(dir.file(n + "a.png")) == cli::readFile(dir.file(n + "b.png")));
+        // The statistics name the layers as an effect only where they were made.
+        CHECK(cli::readFile(dir.file(n + "a.json")).find("\"aovs\"") != std::string::npos);
+        CHECK(cli::readFile(dir.file(n + "b.json")).find("\"aovs\"") == std::string::npos);
+    }
+}
