@@ -4,6 +4,7 @@
     scripts/bench-povray.py [--repeats 3] [--threads 2] [--scenes balls,gears,...]
                             [--pov-triangles mesh2[,mesh][,objects]] [--pov-polygons triangulate|polygon]
                             [--raylab build/bin/raylab] [--raylab-before OTHER] [--povray povray]
+                            [--raylab-output exr|png]
                             [--spd-dir ../shared/scenes/spd] [--images DIR]
                             [--json FILE] [--work DIR]
 
@@ -16,6 +17,9 @@ also makes the pictures), the two commands
 
     povray +ISCENE.pov +OSCENE.png +W512 +H512 -D -A +WT<threads> -V -GA
     raylab render SCENE.nff --spd -o SCENE.exr --quiet --threads <threads> --stats SCENE.json
+
+(--raylab-output png: -o SCENE.png, the 8-bit RGB PNG POV-Ray writes too,
+instead of the EXR with every AOV layer; raylab then computes no layer)
 
 run interleaved, N rounds (the order of the commands rotates between scenes
 and rounds), and the table shows the median wall-clock time of each whole
@@ -166,6 +170,9 @@ def main(argv=None):
     ap.add_argument("--raylab", default=os.path.join(TOP, "build", "bin", "raylab"))
     ap.add_argument("--raylab-before", metavar="PATH",
                     help="a second raylab binary timed in the same rounds (before/after of a change)")
+    ap.add_argument("--raylab-output", choices=["exr", "png"], default="exr",
+                    help="what raylab writes in the timed runs: exr (default: the EXR with every AOV layer, "
+                         "21 channels) or png (an 8-bit RGB PNG, the output POV-Ray writes)")
     ap.add_argument("--povray", default="povray")
     ap.add_argument("--spd-dir", default=os.path.join(TOP, "..", "shared", "scenes", "spd"),
                     help="where balls/gears/rings/teapot/tetra.nff are (default ../shared/scenes/spd)")
@@ -248,13 +255,15 @@ def bench(args, scenes, raylab, povray, work):
                 "+W512", "+H512", "-D", "-A", "+WT%d" % args.threads, "-V", "-GA"]
 
     def ray_cmd(s, extra=(), binary=None):
-        return [binary or raylab, "render", nff[s], "--spd", "-o", os.path.join(work, s + ".exr"), "--quiet",
+        return [binary or raylab, "render", nff[s], "--spd", "-o", os.path.join(work, s + "." + args.raylab_output),
+                "--quiet",
                 "--threads", str(args.threads), "--stats", os.path.join(work, s + "_stats.json")] + list(extra)
 
     machine = {
         "cpu": cpu_model(), "logical_cpus": os.cpu_count(), "memory_gib": round(mem_total_gib(), 1),
         "os": platform.platform(), "povray": tool_version([povray, "--version"]),
         "raylab_commit": git_commit(), "threads": args.threads, "repeats": args.repeats, "nice": NICE,
+        "raylab_output": args.raylab_output,
         "pov_form": "triangles %s, polygons %s" % (" / ".join(args.pov_forms), args.pov_polygons),
         "date": datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
         "load_before": loadavg(),
@@ -326,6 +335,8 @@ def bench(args, scenes, raylab, povray, work):
     print("load average (1/5/15 min): before %.2f %.2f %.2f, after %.2f %.2f %.2f%s"
           % (la + lb + ("; both renderers at niceness %d" % NICE if NICE is not None else "",)))
     print("POV-Ray scene form: %s" % machine["pov_form"])
+    print("raylab writes: %s" % ("an EXR with every AOV layer (21 channels)" if args.raylab_output == "exr"
+                                 else "an 8-bit RGB PNG, as POV-Ray does (no AOV layer is computed)"))
     print()
     several = len(args.pov_forms) > 1
     print("| scene | POV-Ray s%s | raylab s | raylab faster by | POV-Ray CPU s | raylab CPU s |"

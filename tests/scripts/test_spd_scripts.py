@@ -326,12 +326,13 @@ class WithPovray(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             r = subprocess.run([sys.executable, os.path.join(TOP, "scripts", "bench-povray.py"), "--scenes", "tree",
                                 "--repeats", "1", "--threads", "1", "--raylab", RAYLAB,
-                                "--raylab-before", RAYLAB,
+                                "--raylab-before", RAYLAB, "--raylab-output", "png",
                                 "--images", d, "--json", os.path.join(d, "b.json")],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
             out = r.stdout.decode(errors="replace")
             self.assertEqual(r.returncode, 0, out)
             self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| \*\*[0-9.]+×\*\*")
+            self.assertIn("raylab writes: an 8-bit RGB PNG", out)
             # the before/after table, with each round's own ratio
             self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| [0-9.]+× \| [0-9.]+× \|")
             with open(os.path.join(d, "b.json")) as fh:
