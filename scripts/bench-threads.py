@@ -2,9 +2,10 @@
 """Whole-process speed-up of `raylab render` from 1 to N threads (issue 20, bar 3).
 
     scripts/bench-threads.py [--repeats 7] [--threads 1,2] [--raylab build/bin/raylab[,OTHER]]
-                             [--nice N] -- SCENE [render flags ...]
+                             [--nice N] [--output exr] -- SCENE [render flags ...]
 
 Runs `raylab render SCENE FLAGS -o OUT.exr --quiet --threads T --stats S.json`
+(--output png: OUT.png, the 8-bit output alone)
 for every thread count T (and every binary given), interleaved: each round runs
 every command once, in an order that rotates between rounds, after one untimed
 warm-up of each. Prints, per binary and thread count, the medians of the
@@ -69,6 +70,7 @@ def main():
     ap.add_argument("--raylab", default=os.path.join(top, "build", "bin", "raylab"),
                     help="comma-separated binaries (each timed in the same rounds)")
     ap.add_argument("--nice", type=int)
+    ap.add_argument("--output", default="exr", help="the output's extension (exr, png, ...)")
     ap.add_argument("render", nargs="+", help="SCENE and render flags (after --)")
     args = ap.parse_args()
     global NICE
@@ -80,7 +82,7 @@ def main():
 
     def cmd(case):
         b, t = case
-        return [b, "render"] + args.render + ["-o", os.path.join(work, "out.exr"), "--quiet",
+        return [b, "render"] + args.render + ["-o", os.path.join(work, "out." + args.output), "--quiet",
                                               "--threads", str(t), "--stats", os.path.join(work, "s.json")]
 
     samples = {c: [] for c in cases}
@@ -96,8 +98,8 @@ def main():
             samples[c].append((wall, cpu, st["render"], st["write"]))
     load_after = os.getloadavg()
     med = statistics.median
-    print("raylab render %s; %d interleaved rounds, medians; load average before %.1f %.1f %.1f, after %.1f %.1f %.1f%s"
-          % (" ".join(args.render), args.repeats, *load_before, *load_after,
+    print("raylab render %s -o OUT.%s; %d interleaved rounds, medians; load average before %.1f %.1f %.1f, after %.1f %.1f %.1f%s"
+          % (" ".join(args.render), args.output, args.repeats, *load_before, *load_after,
              "; niceness %d" % NICE if NICE is not None else ""))
     print()
     print("| binary | threads | wall s | CPU s | render s | write s | wall speed-up | write ÷ render |")
