@@ -11,10 +11,10 @@ required=(
   libembree-dev         # Embree 3: BVH build and traversal, user geometry
   libtbb-dev            # oneTBB: parallel tile loop
   libopenexr-dev        # OpenEXR: HDR output with AOV layers
-  libisal-dev           # ISA-L's igzip: the deflate of the EXR's ZIP blocks (7x zlib's speed, same sizes)
+  libisal-dev           # ISA-L's igzip: the deflate of the EXR's ZIP blocks (7x zlib's speed, same sizes) and of the PNG
   libtinyobjloader-dev  # tinyobjloader: MTL libraries; the reference OBJ parser of the differential test
   doctest-dev           # doctest: unit and render tests
-  libpng-dev            # libpng: the tone-mapped PNG preview
+  libpng-dev            # libpng: the tests decode the PNGs raylab writes with it
   python3               # scripts/spd (SPD generators, NFF -> POV-Ray) and their tests
   libopenimageio-dev    # OpenImageIO: texture images (PNG, JPEG, TGA, TIFF, BMP, HDR, EXR) and filtered lookups
 )

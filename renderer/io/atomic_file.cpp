@@ -340,22 +340,27 @@ void writeFileAtomically(const std::string& path,
     single.commit();
 }
 
-void writeFileAtomically(const std::string& path, const std::string& contents,
+void writeFileAtomically(const std::string& path, const void* bytes, size_t size,
                          AtomicFileGroup* group) {
     writeFileAtomically(
         path,
         [&](const std::string& tmp) {
             std::FILE* f = std::fopen(tmp.c_str(), "wb");
             if (!f) throw InputError(std::strerror(errno));
-            const size_t written = std::fwrite(contents.data(), 1, contents.size(), f);
+            const size_t written = std::fwrite(bytes, 1, size, f);
             const int writeErr = errno;
             // fclose flushes; a full disk may only show up here.
             const bool closed = std::fclose(f) == 0;
-            if (written != contents.size())
+            if (written != size)
                 throw InputError(std::string("short write: ") + std::strerror(writeErr));
             if (!closed) throw InputError(std::string("close failed: ") + std::strerror(errno));
         },
         group);
+}
+
+void writeFileAtomically(const std::string& path, const std::string& contents,
+                         AtomicFileGroup* group) {
+    writeFileAtomically(path, contents.data(), contents.size(), group);
 }
 
 void checkWritable(const std::string& path) {

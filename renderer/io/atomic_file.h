@@ -3,6 +3,7 @@
 // temporary file beside the target and is renamed over it only when complete,
 // so an interrupted or failed write never leaves a truncated file behind.
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -106,6 +107,9 @@ void writeFileAtomically(const std::string& path,
 /// \brief Writes the bytes of `contents` to `path` atomically (see above).
 /// \throws InputError(path, 0, reason) on any failure.
 void writeFileAtomically(const std::string& path, const std::string& contents,
+                         AtomicFileGroup* group = nullptr);
+/// The same for `size` bytes at `bytes`.
+void writeFileAtomically(const std::string& path, const void* bytes, size_t size,
                          AtomicFileGroup* group = nullptr);
 
 /// \brief Fails early, before a long render, when `path` cannot be written:

@@ -7,7 +7,7 @@
 
 #include "renderer/io/errors.h"
 #include "renderer/io/image_module_loader.h"
-#include "renderer/io/png_memory.h"
+#include "renderer/io/srgb8_encoder.h"
 
 namespace raylab {
 

@@ -2,24 +2,26 @@
 
 #include <isa-l/crc.h>
 #include <isa-l/igzip_lib.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
-
-#include "renderer/io/srgb8_encoder.h"
 
 namespace raylab {
 
 namespace {
 
-/// Rows per task: enough work to be worth a task, few enough for two cores
-/// to share a small image.
-constexpr size_t kRowsPerTask = 16;
+/// Filtered rows handed to igzip at a time (at least one row): bounds the
+/// memory beside the image whatever its size.
+constexpr size_t kBlockBytes = size_t(16) << 20;
+/// Compressed bytes per IDAT chunk (PNG caps a chunk at 2^31 - 1).
+constexpr size_t kIdatBytes = size_t(1) << 20;
+/// igzip takes at most this many input bytes per call (its counts are 32-bit).
+constexpr size_t kDeflateInput = size_t(1) << 30;
 
 /// The Paeth predictor of PNG's filter type 4 (PNG specification, 9.4):
 /// whichever of left, up and upper-left is nearest to left + up − upper-left.
@@ -33,9 +35,9 @@ inline uint8_t paeth(int a, int b, int c) {
 /// Row y of `image` as PNG stores it: filter type 4 (Paeth), then each byte
 /// minus its prediction from the raw bytes left of, above and above-left of
 /// it (zero outside the image).
-void filterRow(const Rgb8Image& image, int y, uint8_t* out) {
+void filterRow(const Rgb8Image& image, size_t y, uint8_t* out) {
     const size_t stride = size_t(image.width) * 3;
-    const uint8_t* row = image.pixels.data() + size_t(y) * stride;
+    const uint8_t* row = image.pixels.data() + y * stride;
     const uint8_t* up = y > 0 ? row - stride : nullptr;
     out[0] = 4;
     uint8_t* f = out + 1;
@@ -45,33 +47,6 @@ void filterRow(const Rgb8Image& image, int y, uint8_t* out) {
         const int c = up && i >= 3 ? up[i - 3] : 0;
         f[i] = uint8_t(row[i] - paeth(a, b, c));
     }
-}
-
-/// zlib stream (RFC 1950) of in[0, n), by igzip at level 1.
-std::vector<unsigned char> zlibCompress(const std::vector<unsigned char>& in) {
-    if (in.size() > std::numeric_limits<uint32_t>::max() / 2)
-        throw std::runtime_error("cannot encode PNG: image too large for one zlib stream");
-    // Room for stored blocks when nothing compresses (5 bytes per 64 KiB)
-    // and the zlib header and trailer.
-    std::vector<unsigned char> out(in.size() + in.size() / 1024 + ISAL_DEF_MAX_HDR_SIZE + 64);
-    const std::unique_ptr<uint8_t[]> levelBuffer(new uint8_t[ISAL_DEF_LVL1_DEFAULT]);
-    isal_zstream stream{};  // zeroed: the init leaves fields the deflate reads
-    isal_deflate_stateless_init(&stream);
-    stream.level = 1;
-    stream.level_buf = levelBuffer.get();
-    stream.level_buf_size = ISAL_DEF_LVL1_DEFAULT;
-    stream.gzip_flag = IGZIP_ZLIB;
-    stream.end_of_stream = 1;
-    stream.flush = NO_FLUSH;
-    stream.next_in = const_cast<uint8_t*>(in.data());
-    stream.avail_in = uint32_t(in.size());
-    stream.next_out = out.data();
-    stream.avail_out = uint32_t(out.size());
-    const int result = isal_deflate_stateless(&stream);
-    if (result != COMP_OK)
-        throw std::runtime_error("cannot encode PNG: igzip deflate failed (" + std::to_string(result) + ")");
-    out.resize(stream.total_out);
-    return out;
 }
 
 void putBigEndian32(std::vector<unsigned char>& out, uint32_t v) {
@@ -91,45 +66,69 @@ void putChunk(std::vector<unsigned char>& out, const char (&type)[5], const unsi
     putBigEndian32(out, crc32_gzip_refl(0, out.data() + start, out.size() - start));
 }
 
-}  // namespace
+/// The rows' zlib stream (RFC 1950) by igzip level 1, appended to a PNG as
+/// IDAT chunks while it is made.
+class IdatWriter {
+public:
+    explicit IdatWriter(std::vector<unsigned char>& png)
+        // The level buffer zeroed (make_unique value-initialises): igzip
+        // reads parts of its hash table it has not written, and the same
+        // rows must give the same bytes (a heap block's old contents gave a
+        // different, valid stream now and then).
+        : m_png(png), m_levelBuffer(std::make_unique<uint8_t[]>(ISAL_DEF_LVL1_DEFAULT)),
+          m_out(kIdatBytes) {
+        isal_deflate_init(&m_stream);
+        m_stream.level = 1;
+        m_stream.level_buf = m_levelBuffer.get();
+        m_stream.level_buf_size = ISAL_DEF_LVL1_DEFAULT;
+        m_stream.gzip_flag = IGZIP_ZLIB;
+        m_stream.flush = NO_FLUSH;
+        m_stream.next_out = m_out.data();
+        m_stream.avail_out = uint32_t(m_out.size());
+    }
 
-Rgb8Image toneMappedImage(const Film& film, double exposure) {
-    Rgb8Image image;
-    image.width = film.width;
-    image.height = film.height;
-    const size_t width = size_t(std::max(film.width, 0));
-    const size_t rows = size_t(std::max(film.height, 0));
-    image.pixels.resize(width * rows * 3);
-    if (film.rgba.size() < width * rows * 4) return image;  // inconsistent: black (as before)
-    const Srgb8Encoder encode(exposure);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, kRowsPerTask),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                          encode.encodeRgba(film.rgba.data() + r.begin() * width * 4,
-                                            r.size() * width,
-                                            image.pixels.data() + r.begin() * width * 3);
-                      });
-    return image;
-}
+    /// Deflates in[0, n); `last`: the stream ends with it.
+    void write(const unsigned char* in, size_t n, bool last) {
+        do {
+            const size_t piece = std::min(n, kDeflateInput);
+            m_stream.next_in = const_cast<uint8_t*>(in);
+            m_stream.avail_in = uint32_t(piece);
+            in += piece;
+            n -= piece;
+            m_stream.end_of_stream = last && n == 0;
+            // Until igzip has taken the piece (and, at the end, finished the stream).
+            while (m_stream.avail_in > 0 ||
+                   (m_stream.end_of_stream && m_stream.internal_state.state != ZSTATE_END)) {
+                const int result = isal_deflate(&m_stream);
+                if (result != COMP_OK)
+                    throw std::runtime_error("igzip deflate failed (" + std::to_string(result) + ")");
+                if (m_stream.avail_out == 0) flush();
+            }
+        } while (n > 0);
+        if (last) flush();
+    }
+
+private:
+    void flush() {
+        const size_t used = m_out.size() - m_stream.avail_out;
+        if (used > 0) putChunk(m_png, "IDAT", m_out.data(), used);
+        m_stream.next_out = m_out.data();
+        m_stream.avail_out = uint32_t(m_out.size());
+    }
+
+    std::vector<unsigned char>& m_png;
+    isal_zstream m_stream{};  // zeroed: the init leaves fields the deflate reads
+    std::unique_ptr<uint8_t[]> m_levelBuffer;
+    std::vector<unsigned char> m_out;
+};
+
+}  // namespace
 
 std::vector<unsigned char> encodePng(const Rgb8Image& in) {
     if (in.width <= 0 || in.height <= 0 ||
         in.pixels.size() != size_t(in.width) * size_t(in.height) * 3)
-        throw std::runtime_error("cannot encode PNG: empty or inconsistent image");
-    if (uint64_t(in.width) > 0x7FFFFFFFu || uint64_t(in.height) > 0x7FFFFFFFu)
-        throw std::runtime_error("cannot encode PNG: image too large");
-    // The filtered rows, each a filter byte and its 3·width bytes, filtered
-    // in parallel (each row reads only raw rows).
-    const size_t rowBytes = size_t(in.width) * 3 + 1;
-    std::vector<unsigned char> filtered(rowBytes * size_t(in.height));
-    tbb::parallel_for(tbb::blocked_range<int>(0, in.height, int(kRowsPerTask)),
-                      [&](const tbb::blocked_range<int>& r) {
-                          for (int y = r.begin(); y < r.end(); ++y)
-                              filterRow(in, y, filtered.data() + size_t(y) * rowBytes);
-                      });
-    const std::vector<unsigned char> idat = zlibCompress(filtered);
-
+        throw std::runtime_error("empty or inconsistent image");
     std::vector<unsigned char> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    out.reserve(idat.size() + 128);
     std::vector<unsigned char> ihdr;
     putBigEndian32(ihdr, uint32_t(in.width));
     putBigEndian32(ihdr, uint32_t(in.height));
@@ -140,7 +139,22 @@ std::vector<unsigned char> encodePng(const Rgb8Image& in) {
     // libpng's writer marked them before.
     const unsigned char srgbIntent = 0;
     putChunk(out, "sRGB", &srgbIntent, 1);
-    putChunk(out, "IDAT", idat.data(), idat.size());
+
+    // Blocks of rows: filtered in parallel (a row reads only raw rows), then
+    // deflated, the stream going on from block to block.
+    const size_t rowBytes = size_t(in.width) * 3 + 1;
+    const size_t rows = size_t(in.height);
+    const size_t blockRows = std::max<size_t>(1, kBlockBytes / rowBytes);
+    std::vector<unsigned char> filtered(std::min(blockRows, rows) * rowBytes);
+    IdatWriter idat(out);
+    for (size_t y0 = 0; y0 < rows; y0 += blockRows) {
+        const size_t y1 = std::min(rows, y0 + blockRows);
+        tbb::parallel_for(tbb::blocked_range<size_t>(y0, y1, 16), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t y = r.begin(); y < r.end(); ++y)
+                filterRow(in, y, filtered.data() + (y - y0) * rowBytes);
+        });
+        idat.write(filtered.data(), (y1 - y0) * rowBytes, y1 == rows);
+    }
     putChunk(out, "IEND", nullptr, 0);
     return out;
 }

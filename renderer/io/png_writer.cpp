@@ -40,7 +40,7 @@ void writePng(const std::string& path, const Film& film, double exposure, Atomic
     } catch (const std::exception& e) {
         throw InputError(path, 0, std::string("cannot write PNG: ") + e.what());
     }
-    writeFileAtomically(path, std::string(bytes.begin(), bytes.end()), group);
+    writeFileAtomically(path, bytes.data(), bytes.size(), group);
 }
 
 }  // namespace raylab

@@ -1,5 +1,9 @@
 #include "renderer/io/srgb8_encoder.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -49,6 +53,23 @@ void Srgb8Encoder::encodeRgba(const float* rgba, size_t count, uint8_t* rgb) con
         rgb[3 * i + 1] = (*this)(rgba[4 * i + 1]);
         rgb[3 * i + 2] = (*this)(rgba[4 * i + 2]);
     }
+}
+
+Rgb8Image toneMappedImage(const Film& film, double exposure) {
+    Rgb8Image image;
+    image.width = film.width;
+    image.height = film.height;
+    const size_t width = size_t(std::max(film.width, 0));
+    const size_t rows = size_t(std::max(film.height, 0));
+    image.pixels.resize(width * rows * 3);
+    if (film.rgba.size() < width * rows * 4) return image;  // inconsistent: black
+    const Srgb8Encoder encode(exposure);
+    // 16 rows a task: enough work for a task, and two cores share a small image.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 16), [&](const tbb::blocked_range<size_t>& r) {
+        encode.encodeRgba(film.rgba.data() + r.begin() * width * 4, r.size() * width,
+                          image.pixels.data() + r.begin() * width * 3);
+    });
+    return image;
 }
 
 }  // namespace raylab

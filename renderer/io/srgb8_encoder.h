@@ -11,8 +11,10 @@
 // patterns, so 255 bisections over the bits find the smallest float of each
 // code, and a table indexed by the top 16 bits of a float (1/128 of an
 // octave) holds the code at the start of its slice. At most 0.62 codes lie
-// in a slice (the curve's steepest relative slope, 255·1.055/2.4 per unit of
-// ln v, times ln 2/128), so a lookup ends after one or two compares.
+// in a slice of normal floats (the curve's steepest relative slope,
+// 255·1.055/2.4 per unit of ln v, times ln 2/128), so a lookup ends after one
+// or two compares; only subnormal inputs under a huge exposure (slices linear
+// in the bits) may walk further, to the same code.
 //
 // Exact, not an approximation: the computed curve can only step backwards
 // where pow and the last roundings are within a few double ULPs of a code
@@ -25,6 +27,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include "renderer/film.h"
 
 namespace raylab {
 
@@ -60,5 +64,15 @@ private:
     std::array<uint32_t, 256> m_firstOf{};  ///< [k]: first bits with code >= k; [0] = 0
     std::vector<uint8_t> m_sliceStart;      ///< code of the first float of each slice
 };
+
+/// 8-bit RGB pixels, row 0 at the top.
+struct Rgb8Image {
+    int width = 0, height = 0;
+    std::vector<uint8_t> pixels;  ///< 3 bytes per pixel
+};
+
+/// The film's colour as the 8-bit outputs (PNG, JPEG) show it: toneMapSrgb8's
+/// codes (png_writer.h), by Srgb8Encoder, rows in parallel.
+Rgb8Image toneMappedImage(const Film& film, double exposure = 0);
 
 }  // namespace raylab

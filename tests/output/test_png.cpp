@@ -168,7 +168,7 @@ std::vector<uint8_t> decodeWithLibpng(const std::vector<unsigned char>& bytes, i
 
 TEST_CASE("png: encodePng round-trips through libpng (noise, gradients, 1x1, strips)") {
     std::mt19937 rng(7);
-    const std::pair<int, int> sizes[] = {{1, 1}, {1, 300}, {777, 2}, {64, 48}, {257, 129}};
+    const std::pair<int, int> sizes[] = {{1, 1}, {1, 300}, {777, 2}, {64, 48}, {257, 129}, {70000, 1}};
     for (const auto& [w, h] : sizes) {
         for (int pattern = 0; pattern < 3; ++pattern) {
             CAPTURE(w);
@@ -197,6 +197,28 @@ TEST_CASE("png: encodePng round-trips through libpng (noise, gradients, 1x1, str
             CHECK(s.compare(s.size() - 8, 4, "IEND") == 0);
         }
     }
+    // Beyond one IDAT chunk (1 MiB of compressed rows) and one block of
+    // rows handed to igzip at a time (16 MiB): noise that does not compress.
+    Rgb8Image large;
+    large.width = 2100;
+    large.height = 2900;
+    large.pixels.resize(size_t(large.width) * size_t(large.height) * 3);
+    for (uint8_t& b : large.pixels) b = uint8_t(rng());
+    const std::vector<unsigned char> bytes = encodePng(large);
+    int w = 0, h = 0;
+    CHECK(decodeWithLibpng(bytes, w, h) == large.pixels);
+    // IDAT chunks of exactly 1 MiB of data, the last one up to that.
+    std::vector<uint32_t> idat;
+    for (size_t at = 8; at + 8 <= bytes.size();) {
+        const std::string s(bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at) + 8);
+        if (s.compare(4, 4, "IDAT") == 0) idat.push_back(bigEndian32(s, 0));
+        at += 12 + bigEndian32(s, 0);
+    }
+    REQUIRE(idat.size() > 10);  // 18 MB of noise
+    for (size_t k = 0; k + 1 < idat.size(); ++k) CHECK(idat[k] == 1u << 20);
+    CHECK(idat.back() > 0u);
+    CHECK(idat.back() <= 1u << 20);
+
     Rgb8Image bad;
     CHECK_THROWS_AS(encodePng(bad), std::runtime_error);
     bad.width = bad.height = 2;
