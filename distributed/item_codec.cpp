@@ -50,7 +50,12 @@ private:
 
 ItemCodec::ItemCodec(const FrameRenderer& frame, const RenderOptions& options)
     : m_frame(frame), m_spd(options.spd), m_matteRanks(matteRanksOfSampling(options)),
-      m_window(cropPixels(options.crop, options.width, options.height)) {}
+      m_window(cropPixels(options.crop, options.width, options.height)) {
+    // Every message carries the AOV layers: a film without them has none to
+    // send or to receive into (render keeps them under mpirun).
+    if (!options.wantAovs)
+        throw std::logic_error("distributed rendering needs the AOV layers (RenderOptions::wantAovs)");
+}
 
 size_t ItemCodec::payloadBytes(int item) const {
     const WorkRegion r = m_frame.region(item);

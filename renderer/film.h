@@ -71,9 +71,6 @@ struct Film {
     Film(int w, int h, int x0, int y0, int fullW, int fullH, int ranks = kMatteRanks,
          bool aovs = true);
 
-    /// Whether the AOV planes (z to mattes) are there.
-    bool hasAovs() const { return !z.empty(); }
-
     /// Pixel i's first entry of `matteRanks`.
     MatteEntry* mattesOf(size_t i) { return mattes.data() + i * size_t(matteRanks); }
     const MatteEntry* mattesOf(size_t i) const { return mattes.data() + i * size_t(matteRanks); }

@@ -84,14 +84,14 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
                    tc.nonFinite);
     tc.cappedSamples += spent.capped;
     tc.maxSampleRays = std::max(tc.maxSampleRays, spent.traced);
-    if (s.first.hit) {
+    if (s.first.hit && opt.wantAovs) {
         // Planar depth: the hit point's distance from the eye plane, along the view axis.
         const CameraFrame& f = scene.camera.frame();
         const Vec3 forward = -f.w;
         const double d = dot(ray.o - f.eye, forward) +
                          double(s.first.distance) * dot(ray.d, forward) / length(ray.d);
         s.first.depth = float(std::min(d, double(FLT_MAX)));
-    } else if (opt.alpha == AlphaMode::Transparent) {
+    } else if (!s.first.hit && opt.alpha == AlphaMode::Transparent) {
         s.c = Color{};  // the background is left out: RGB premultiplied by coverage
     }
     return s;

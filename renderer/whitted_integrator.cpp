@@ -212,11 +212,13 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
     const Vec3 ng = entering ? si.ng : -si.ng;
 
     if (first) {
-        first->hit = true;
-        first->distance = float(std::min(hit->t * length(ray.d), double(FLT_MAX)));
-        first->normal = si.ns;
-        first->albedo = diffuseAt(si, m);
-        first->objectId = float(si.object);
+        first->hit = true;  // the pixel's coverage (alpha) needs it always
+        if (m_options.wantAovs) {  // the layers only where an output carries them
+            first->distance = float(std::min(hit->t * length(ray.d), double(FLT_MAX)));
+            first->normal = si.ns;
+            first->albedo = diffuseAt(si, m);
+            first->objectId = float(si.object);
+        }
     }
 
     const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays

@@ -218,7 +218,8 @@ TEST_CASE("cli: --compression writes the same picture in every scheme") {
 TEST_CASE("cli: without an EXR output no AOV layer is computed, and every pixel is the same") {
     // The layers (depth, normal, albedo, objectId, Cryptomatte) are computed
     // only for an EXR: a PNG alone comes from an RGBA-only film. Its bytes
-    // must equal the PNG written beside an EXR, on every sampling path.
+    // must equal the PNG written beside an EXR, on every sampling path (with
+    // --alpha transparent the background is left out by coverage).
     cli::TempDir dir;
     const std::string json = dir.write("tiny.json", kTinyScene);
     const std::string nff = dir.write("tiny.nff",
@@ -228,7 +229,8 @@ TEST_CASE("cli: without an EXR output no AOV layer is computed, and every pixel 
                                       "f 0.2 0.8 0.2 1 0 1 0 0\np 4\n-3 -1 -3\n3 -1 -3\n3 -1 3\n-3 -1 3\n");
     const std::pair<std::string, std::string> cases[] = {
         {json, ""}, {json, "--spp 4"}, {json, "--adaptive 0.05"}, {json, "--crop 0.2,0.7,0.1,0.9"},
-        {nff, "--spd"}, {nff, "--spd --crop 0.3,1,0,0.5"}};
+        {json, "--spp 4 --alpha transparent"}, {json, "--adaptive 0.05 --alpha transparent"},
+        {nff, "--spd"}, {nff, "--spd --crop 0.3,1,0,0.5"}, {nff, "--spd --alpha transparent"}};
     int k = 0;
     for (const auto& [scene, flags] : cases) {
         CAPTURE(flags);
