@@ -1,6 +1,7 @@
 #pragma once
-// The 8-bit sRGB code of a linear film value, the same code toneMapSrgb8's
-// formula gives (png_writer.h), without a pow per channel.
+// The 8-bit sRGB code of a linear film value: its formula (srgb8Code,
+// toneMapSrgb8), and Srgb8Encoder, which gives the same codes without a pow
+// per channel.
 //
 // Why: writing a 512x512 PNG spent more time in that formula's pow than the
 // render of tetra took (docs/benchmarks.md, "The 8-bit outputs").
@@ -29,8 +30,22 @@
 #include <vector>
 
 #include "renderer/film.h"
+#include "shading/srgb.h"  // linearToSrgb: 12.92·v up to 0.0031308, else 1.055·v^(1/2.4) − 0.055
 
 namespace raylab {
+
+/// \brief One channel's 8-bit sRGB code: c·scale clamped to [0, 1], encoded
+/// with linearToSrgb and rounded half up to 0..255; 0 for NaN (before or
+/// after scaling), 255 for +Inf. The definition every 8-bit output follows;
+/// Srgb8Encoder (below) gives the same codes faster.
+uint8_t srgb8Code(float c, double scale);
+
+/// \brief Maps one linear RGB colour to 8-bit sRGB.
+///
+/// Each channel is scaled by 2^exposure, clamped to [0, 1], encoded with
+/// linearToSrgb and rounded to the nearest of 0..255 (srgb8Code with scale
+/// 2^exposure): NaN maps to 0, +Inf to 255.
+std::array<uint8_t, 3> toneMapSrgb8(float r, float g, float b, double exposure);
 
 class Srgb8Encoder {
 public:
@@ -72,7 +87,7 @@ struct Rgb8Image {
 };
 
 /// The film's colour as the 8-bit outputs (PNG, JPEG) show it: toneMapSrgb8's
-/// codes (png_writer.h), by Srgb8Encoder, rows in parallel.
+/// codes, by Srgb8Encoder, rows in parallel.
 Rgb8Image toneMappedImage(const Film& film, double exposure = 0);
 
 }  // namespace raylab
