@@ -331,12 +331,15 @@ class WithPovray(unittest.TestCase):
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
             out = r.stdout.decode(errors="replace")
             self.assertEqual(r.returncode, 0, out)
-            self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| \*\*[0-9.]+×\*\*")
+            self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| \*\*[0-9.]+×\*\* \| [0-9.]+× \|")
             self.assertIn("raylab writes: an 8-bit RGB PNG", out)
             # the before/after table, with each round's own ratio
             self.assertRegex(out, r"\| tree \| [0-9.]+ \| [0-9.]+ \| [0-9.]+× \| [0-9.]+× \|")
             with open(os.path.join(d, "b.json")) as fh:
-                self.assertGreater(json.load(fh)["scenes"][0]["round_speedup"], 0)
+                scene = json.load(fh)["scenes"][0]
+                self.assertGreater(scene["round_speedup"], 0)
+                # one round: its own ratio is the ratio of the medians
+                self.assertAlmostEqual(scene["round_ratio"], scene["ratio"], places=9)
             self.assertTrue(os.path.isfile(os.path.join(d, "tree.png")))
             self.assertEqual(png_compare.read_png(os.path.join(d, "tree.png"))[:2], (516, 256))
 
