@@ -25,8 +25,8 @@ run interleaved, N rounds (the order of the commands rotates between scenes
 and rounds), and the table shows the median wall-clock time of each whole
 process (start-up, parse, build, render, writing the picture) and the ratio
 of the medians, and beside it the median of each round's own ratio (less
-moved when the machine's speed drifts during the run). -A: no anti-aliasing (POV then traces one ray through each
-pixel centre; raylab's --spd traces the 513x513 pixel corners); -D: no
+moved when the machine's speed drifts during the run). -A: no anti-aliasing
+(POV then traces one ray through each pixel centre; raylab's --spd traces the 513x513 pixel corners); -D: no
 display window; -V -GA: no console output; max_trace_level 5 is in the scene
 (SPD depth 5, the eye ray is level 1 in both). raylab's own --stats
 breakdown (parse, build, render, write; medians of the same runs) shows where
@@ -308,6 +308,13 @@ def bench(args, scenes, raylab, povray, work):
 
     # ---- report ----
     med = statistics.median
+
+    def per_round(numerators, denominators):
+        # The median of each round's own ratio, the two runs of a round
+        # close in time: steadier than the ratio of the medians when the
+        # machine's speed drifts.
+        return med([a / b for a, b in zip(numerators, denominators)])
+
     rows = []
     for s in scenes:
         d = samples[s]
@@ -318,19 +325,16 @@ def bench(args, scenes, raylab, povray, work):
         phase["other"] = ray - sum(phase.values())
         rows.append({"scene": s, "povray_s": pov, "povray_form": best, "povray_forms_s": forms,
                      "raylab_s": ray, "ratio": pov / ray,
-                     # Each round's own POV-Ray ÷ raylab (the fastest form's run of
-                     # that round): less moved by the machine's drift than the
-                     # ratio of the medians, which stays the headline figure.
-                     "round_ratio": med([p / r for p, r in zip(d["pov_" + best], d["raylab"])]),
+                     # POV-Ray (the fastest form) ÷ raylab per round; the ratio of
+                     # the medians stays the headline figure.
+                     "round_ratio": per_round(d["pov_" + best], d["raylab"]),
                      "povray_cpu_s": med(d["pov_%s_cpu" % best]), "raylab_cpu_s": med(d["raylab_cpu"]),
                      "raylab_phases_s": phase, "rays": d.get("rays"), "primitives": d.get("primitives"),
                      "samples": {k: v for k, v in d.items() if k != "stats"}})
         if args.raylab_before:
             rows[-1]["before_s"] = med(d["before"])
             rows[-1]["before_cpu_s"] = med(d["before_cpu"])
-            # Each round's own ratio, the two runs back to back: steadier than
-            # the ratio of the medians when the machine's speed drifts.
-            rows[-1]["round_speedup"] = med([b / a for b, a in zip(d["before"], d["raylab"])])
+            rows[-1]["round_speedup"] = per_round(d["before"], d["raylab"])
 
     la, lb = machine["load_before"], machine["load_after"]
     print("machine: %s, %d logical CPUs, %.1f GiB; %s" % (machine["cpu"], machine["logical_cpus"],
@@ -356,8 +360,10 @@ def bench(args, scenes, raylab, povray, work):
     print()
     print("raylab faster by: POV-Ray's median ÷ raylab's; per round: the median over rounds of each"
           " round's POV-Ray ÷ raylab")
+    lowest = min(rows, key=lambda r: r["ratio"])
+    lowest_round = min(rows, key=lambda r: r["round_ratio"])
     print("smallest ratio: %.1f× (%s); per round %.1f× (%s)"
-          % (min((r["ratio"], r["scene"]) for r in rows) + min((r["round_ratio"], r["scene"]) for r in rows)))
+          % (lowest["ratio"], lowest["scene"], lowest_round["round_ratio"], lowest_round["scene"]))
     if args.raylab_before:
         print()
         print("raylab before (%s) and after (%s), same rounds:" % (args.raylab_before, raylab))
