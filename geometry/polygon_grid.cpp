@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -56,17 +57,36 @@ PolygonGrid::PolygonGrid(const std::vector<Vec2>& vertices, FillRule rule, doubl
     m_cellH = h / m_ny;
     m_invCellW = m_nx / w;
     m_invCellH = m_ny / h;
-    // Built a byte a cell, then packed.
+    // Built a byte a cell, then packed: classified first, then the edges
+    // marked over it (an Edge cell's classification is never read).
     std::vector<Cell> grid(size_t(m_nx) * size_t(m_ny), Cell::Outside);
-    markEdges(vertices, grid);
     classifyRows(vertices, rule, grid);
-    m_packed.assign((grid.size() + kCellsPerByte - 1) / kCellsPerByte, 0);
+    markEdges(vertices, grid);
+    pack(grid);
+}
+
+void PolygonGrid::pack(const std::vector<Cell>& grid) {
+    // Four cells (values 0..2) to a byte, four at a time: in the word
+    // w = c0 | c1 << 8 | c2 << 16 | c3 << 24, cell c_k sits at bit 8k and
+    // belongs at bit 2k.
+    static_assert(kCellsPerByte == 4, "four two-bit cells to a byte");
+    const size_t n = grid.size();
+    m_packed.assign((n + kCellsPerByte - 1) / kCellsPerByte, 0);
+    const auto* bytes = reinterpret_cast<const uint8_t*>(grid.data());
     size_t edge = 0;
-    for (size_t k = 0; k < grid.size(); ++k) {
+    size_t k = 0;
+    for (; k + 4 <= n; k += 4) {
+        const uint32_t w = uint32_t(bytes[k]) | uint32_t(bytes[k + 1]) << 8 |
+                           uint32_t(bytes[k + 2]) << 16 | uint32_t(bytes[k + 3]) << 24;
+        m_packed[k / 4] = uint8_t((w | w >> 6 | w >> 12 | w >> 18) & 0xFFu);
+        // Bit 1 of a cell is set for Edge (2) only; the multiply sums the bytes.
+        edge += (((w >> 1) & 0x01010101u) * 0x01010101u) >> 24;
+    }
+    for (; k < n; ++k) {
         m_packed[k / kCellsPerByte] |= uint8_t(unsigned(grid[k]) << (2 * (k % kCellsPerByte)));
         edge += grid[k] == Cell::Edge;
     }
-    m_edgeFraction = double(edge) / double(grid.size());
+    m_edgeFraction = double(edge) / double(n);
 }
 
 void PolygonGrid::markEdges(const std::vector<Vec2>& vertices, std::vector<Cell>& cells) const {
@@ -111,11 +131,22 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
                                std::vector<Cell>& cells) const {
     // For each row, the edges crossing the horizontal line through its cell
     // centres (half-open rule: an upward edge includes its start, excludes its
-    // end), sorted by x; a centre's winding number is the signed count of
-    // crossings to its right. No crossing lies inside a non-Edge cell (the
-    // edge would pass through it), so the centre's answer is the whole cell's.
-    // Gathered edge by edge: each edge visits only the rows it spans.
-    std::vector<std::vector<std::pair<double, int>>> crossings(static_cast<size_t>(m_ny));  // (x, ±1)
+    // end); a centre's winding number is the signed count of crossings to its
+    // right. No crossing lies inside a non-Edge cell (the edge would pass
+    // through it), so the centre's answer is the whole cell's. Each crossing
+    // becomes the column `boundary` left of which the centres see it (centre
+    // x < crossing x: the centres' x grow with the column, so those columns
+    // are the first ones); the cells between two boundaries share an answer
+    // and are filled as a run. Gathered edge by edge: each edge visits only
+    // the rows it spans.
+    struct Crossing {
+        int row;
+        int boundary;  ///< columns [0, boundary) have their centre left of it
+        int sign;      ///< +1 upward, -1 downward
+    };
+    std::vector<Crossing> crossings;
+    crossings.reserve(2 * vertices.size());
+    const auto centre = [&](int i) { return cellCentre(i, 0).x; };
     const size_t n = vertices.size();
     for (size_t k = 0; k < n; ++k) {
         const Vec2& a = vertices[k];
@@ -128,29 +159,52 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
         const int j0 = std::max(0, int(std::floor((lo.y - m_v0) * m_invCellH - 0.5)) - 1);
         const int j1 = std::min(m_ny - 1, int(std::floor((hi.y - m_v0) * m_invCellH - 0.5)) + 1);
         for (int j = j0; j <= j1; ++j) {
-            const double yc = m_v0 + (j + 0.5) * m_cellH;
+            const double yc = cellCentre(0, j).y;
             if ((a.y <= yc) == (b.y <= yc)) continue;
             const double x = a.x + (yc - a.y) * (b.x - a.x) / (b.y - a.y);
-            crossings[size_t(j)].push_back({x, b.y > a.y ? 1 : -1});
+            // An estimate, then the exact comparisons settle it (NaN: none).
+            const double estimate = std::floor((x - m_u0) * m_invCellW + 0.5);
+            int boundary = estimate >= 0 ? (estimate <= m_nx ? int(estimate) : m_nx) : 0;
+            while (boundary > 0 && !(x > centre(boundary - 1))) --boundary;
+            while (boundary < m_nx && x > centre(boundary)) ++boundary;
+            crossings.push_back({j, boundary, b.y > a.y ? 1 : -1});
         }
     }
+    // Row by row, right to left: the cells right of every boundary are
+    // outside (no crossing to their right); each boundary passed adds its
+    // crossing to those of the cells left of it. Grouped by row (a counting
+    // sort), then each row's few crossings by boundary, highest first.
+    std::vector<int> rowStart(size_t(m_ny) + 1, 0);
+    for (const Crossing& x : crossings) ++rowStart[size_t(x.row) + 1];
+    for (int j = 0; j < m_ny; ++j) rowStart[size_t(j) + 1] += rowStart[size_t(j)];
+    std::vector<Crossing> byRow(crossings.size());
+    {
+        std::vector<int> slot(rowStart.begin(), rowStart.end() - 1);
+        for (const Crossing& x : crossings) byRow[size_t(slot[size_t(x.row)]++)] = x;
+    }
     for (int j = 0; j < m_ny; ++j) {
-        auto& row = crossings[size_t(j)];
-        std::sort(row.begin(), row.end());
+        // Insertion sort: a row has a handful of crossings.
+        Crossing* first = byRow.data() + rowStart[size_t(j)];
+        Crossing* last = byRow.data() + rowStart[size_t(j) + 1];
+        for (Crossing* p = first + 1; p < last; ++p)
+            for (Crossing* q = p; q > first && q[-1].boundary < q->boundary; --q)
+                std::swap(q[-1], *q);
+    }
+    for (int j = 0; j < m_ny; ++j) {
+        Cell* row = cells.data() + size_t(j) * size_t(m_nx);
         int winding = 0, count = 0;
-        size_t right = row.size();  // row[right..] lie right of the centre
-        for (int i = m_nx - 1; i >= 0; --i) {
-            const double xc = m_u0 + (i + 0.5) * m_cellW;
-            while (right > 0 && row[right - 1].first > xc) {
-                --right;
-                winding += row[right].second;
-                ++count;
-            }
-            Cell& c = cells[size_t(j) * size_t(m_nx) + size_t(i)];
-            if (c == Cell::Edge) continue;
+        int right = m_nx;  // cells [right, m_nx) are filled
+        const auto fill = [&](int from) {
             const bool inside = rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
-            c = inside ? Cell::Inside : Cell::Outside;
+            std::fill(row + from, row + right, inside ? Cell::Inside : Cell::Outside);
+            right = from;
+        };
+        for (int k = rowStart[size_t(j)]; k < rowStart[size_t(j) + 1]; ++k) {
+            fill(byRow[size_t(k)].boundary);
+            winding += byRow[size_t(k)].sign;
+            ++count;
         }
+        fill(0);
     }
 }
 

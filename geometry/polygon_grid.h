@@ -38,8 +38,17 @@ public:
         const double x = (u - m_u0) * m_invCellW, y = (v - m_v0) * m_invCellH;
         // Written so that NaN lands outside the grid too.
         if (!(x >= 0 && x < m_nx && y >= 0 && y < m_ny)) return Cell::Outside;
-        const size_t k = size_t(int(y)) * size_t(m_nx) + size_t(int(x));
+        return cell(int(x), int(y));
+    }
+
+    /// The cell in column i, row j (0 <= i < columns(), 0 <= j < rows()).
+    Cell cell(int i, int j) const {
+        const size_t k = size_t(j) * size_t(m_nx) + size_t(i);
         return Cell((m_packed[k / kCellsPerByte] >> (2 * (k % kCellsPerByte))) & 3u);
+    }
+    /// The centre of that cell, where a non-Edge cell's state was decided.
+    Vec2 cellCentre(int i, int j) const {
+        return {m_u0 + (i + 0.5) * m_cellW, m_v0 + (j + 0.5) * m_cellH};
     }
 
     double clearance() const { return m_clearance; }
@@ -52,6 +61,8 @@ private:
     void markEdges(const std::vector<Vec2>& vertices, std::vector<Cell>& cells) const;
     void classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
                       std::vector<Cell>& cells) const;
+    /// Packs the cells into m_packed and counts the Edge ones.
+    void pack(const std::vector<Cell>& grid);
 
     double m_u0 = 0, m_v0 = 0;           ///< lower-left corner of the grid
     double m_cellW = 1, m_cellH = 1;     ///< cell size

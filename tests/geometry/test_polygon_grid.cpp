@@ -175,6 +175,69 @@ TEST_CASE("polygon grid: every cell keeps its state in the two-bit packing, at a
     CHECK(unevenGrids >= 3);
 }
 
+TEST_CASE("polygon grid: every non-Edge cell holds the winding of its centre, counted edge by edge") {
+    // The grid classifies a row's cells in runs between crossings; this is
+    // the definition it must reproduce, cell by cell: the signed count of
+    // edges crossing the centre's horizontal line to its right (half-open:
+    // an edge counts when exactly one end lies at or below the line).
+    const auto expected = [](const std::vector<Vec2>& v, FillRule rule, const Vec2& c) {
+        int winding = 0, count = 0;
+        for (size_t k = 0; k < v.size(); ++k) {
+            const Vec2& a = v[k];
+            const Vec2& b = v[(k + 1) % v.size()];
+            if ((a.y <= c.y) == (b.y <= c.y)) continue;
+            const double x = a.x + (c.y - a.y) * (b.x - a.x) / (b.y - a.y);
+            if (x > c.x) {
+                winding += b.y > a.y ? 1 : -1;
+                ++count;
+            }
+        }
+        return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
+    };
+    std::vector<std::vector<Vec2>> shapes;
+    std::vector<Vec2> gear, starOutline, square;
+    for (const Vec3& p : gearFace()) gear.push_back({p.x, p.y});
+    for (const Vec3& p : star({0, 0, 1})) starOutline.push_back({p.x, p.y});
+    // Vertices exactly on cell-centre lines and crossings exactly at centres.
+    for (const Vec2& p : {Vec2{0, 0}, Vec2{4, 0}, Vec2{4, 4}, Vec2{0, 4}}) square.push_back(p);
+    shapes = {gear, starOutline, square};
+    SplitMix64 rng(20261205);
+    for (int t = 0; t < 40; ++t) {  // scribbles: self-intersecting, repeated x and y
+        std::vector<Vec2> s;
+        const int n = 3 + int(rng.uniform() * 60);
+        for (int k = 0; k < n; ++k)
+            s.push_back({std::round(rng.uniform() * 16) / 4, std::round(rng.uniform() * 16) / 4});
+        shapes.push_back(s);
+    }
+    long checked = 0, edges = 0;
+    for (const std::vector<Vec2>& v : shapes) {
+        for (const FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+            for (const int cells : {16, 99, 1000, 9216}) {
+                const PolygonGrid grid(v, rule, 1e-4, cells);
+                long gridEdges = 0;
+                for (int j = 0; j < grid.rows(); ++j) {
+                    for (int i = 0; i < grid.columns(); ++i) {
+                        const PolygonGrid::Cell c = grid.cell(i, j);
+                        CHECK(c == grid.at(grid.cellCentre(i, j).x, grid.cellCentre(i, j).y));
+                        if (c == PolygonGrid::Cell::Edge) {
+                            ++gridEdges;
+                            continue;
+                        }
+                        ++checked;
+                        CHECK((c == PolygonGrid::Cell::Inside) == expected(v, rule, grid.cellCentre(i, j)));
+                    }
+                }
+                // The edge fraction is the count of Edge cells.
+                CHECK(grid.edgeFraction() ==
+                      double(gridEdges) / double(grid.rows() * grid.columns()));
+                edges += gridEdges;
+            }
+        }
+    }
+    CHECK(checked > 100000);
+    CHECK(edges > 0);
+}
+
 TEST_CASE("polygon grid: the gear face answers exactly as the watertight test") {
     const auto gear = makeGridPolygon(gearFace(), FillRule::EvenOdd);
     REQUIRE(gear->grid() != nullptr);
