@@ -22,17 +22,16 @@
 //   (they can never be hit; tessellators emit them at poles).
 //
 // Polygons with 4 or more vertices are built (normal, planarity, the inside
-// test's grid) side by side once the file is read, in the objects' order;
-// errors keep the file's order: the first bad polygon is reported, unless
-// the text broke before it.
+// test's grid) by tasks while the rest of the file is read, in batches handed
+// over as they fill; errors keep the file's order: the first bad polygon is
+// reported, unless the text broke before it.
 //
 // Error locations: a malformed token (not a number, NaN/Inf, out of range) is
 // reported on its own line; a wrong count of numbers or a truncated polygon on
 // the line where the entity starts, since in a token stream the mistake is only
 // noticed at the next entity's keyword.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <charconv>
@@ -42,6 +41,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -178,6 +178,17 @@ public:
         const size_t lines = size_t(std::count(text.begin(), text.end(), '\n')) + 1;
         m_objects.reserve(std::min({lines, text.size() / 9 + 1, size_t(1) << 20}));
     }
+
+    // The builder tasks read m_path and write their batches: they must be
+    // done before either goes (they catch every error themselves).
+    ~NffReader() {
+        try {
+            m_builders.wait();
+        } catch (...) {
+        }
+    }
+    NffReader(const NffReader&) = delete;
+    NffReader& operator=(const NffReader&) = delete;
 
     Scene read() {
         try {
@@ -571,45 +582,79 @@ private:
             addTriangle(mat, patch);
             return;
         }
-        // Built later, with the others (buildPolygons): the object is added
-        // now, without its shape, so that a pending polygon names one that exists.
+        // Built by a task (handOver), its shape given by buildPolygons: the
+        // object is added now, without it, so that the polygon names one that exists.
         addObject(patch ? "patch" : "polygon");
-        PendingPolygon pending{m_objects.size() - 1, m_entityLine, sides(false), {}};
+        if (!m_filling) m_filling = std::make_unique<PolygonBatch>();
+        PendingPolygon& pending = m_filling->polygons.emplace_back();
+        pending.object = m_objects.size() - 1;
+        pending.line = m_entityLine;
+        pending.sides = sides(false);
         pending.params.vertices = m_vertices;
         pending.params.normals = m_normals;
-        m_pending.push_back(std::move(pending));
+        m_filling->vertices += m_vertices.size();
+        if (m_filling->vertices >= kBatchVertices) handOver();
     }
 
-    /// A polygon read, to be built by buildPolygons into objects[object].
+    /// A polygon read, to be built by a task into `shape` (or `error`), then
+    /// moved by buildPolygons into objects[object].
     struct PendingPolygon {
-        size_t object;
-        int line;  ///< where its entity starts, for errors
-        Sidedness sides;
+        size_t object = 0;
+        int line = 0;  ///< where its entity starts, for errors
+        Sidedness sides = Sidedness::Outside;
         PolygonParams params;
+        std::unique_ptr<Shape> shape;
+        std::exception_ptr error;
     };
 
-    /// Builds every pending polygon, several at a time (their grids are most
-    /// of an SPD gears load); rethrows the error of the first in file order.
+    /// Polygons handed to one task. A batch does not move once handed over
+    /// (the reader keeps only a pointer to it), so the task writes into it
+    /// while the reader goes on.
+    struct PolygonBatch {
+        std::vector<PendingPolygon> polygons;
+        size_t vertices = 0;
+    };
+
+    /// About this many vertices per task: SPD gears (9,217 quads and 128
+    /// 144-gons) makes ~50 tasks, each far longer than its hand-over.
+    static constexpr size_t kBatchVertices = 1024;
+
+    /// Starts a task that builds the filling batch.
+    void handOver() {
+        PolygonBatch* batch = m_filling.get();
+        m_batches.push_back(std::move(m_filling));
+        m_builders.run([this, batch] { build(*batch); });
+    }
+
+    /// Builds the batch's polygons; each keeps its shape or its error.
+    void build(PolygonBatch& batch) const {
+        for (PendingPolygon& p : batch.polygons) {
+            try {
+                std::unique_ptr<Shape> shape =
+                    callFactory(m_path, p.line, "", [&] { return makePolygon(p.params); });
+                shape->setSidedness(p.sides);
+                p.shape = std::move(shape);
+            } catch (...) {
+                p.error = std::current_exception();
+            }
+            p.params = {};  // its vertices are the polygon's now
+        }
+    }
+
+    /// Waits for every polygon read (the last batch too) to be built, then
+    /// gives each its object; rethrows the error of the first in file order.
     void buildPolygons() {
-        std::vector<std::exception_ptr> errors(m_pending.size());
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pending.size()),
-                          [&](const tbb::blocked_range<size_t>& range) {
-                              for (size_t i = range.begin(); i != range.end(); ++i) {
-                                  PendingPolygon& p = m_pending[i];
-                                  try {
-                                      std::unique_ptr<Shape> shape = callFactory(
-                                          m_path, p.line, "", [&] { return makePolygon(p.params); });
-                                      shape->setSidedness(p.sides);
-                                      m_objects[p.object].shape = std::move(shape);
-                                  } catch (...) {
-                                      errors[i] = std::current_exception();
-                                  }
-                                  p.params = {};  // its vertices are the polygon's now
-                              }
-                          });
-        m_pending.clear();
-        for (const std::exception_ptr& e : errors)
-            if (e) std::rethrow_exception(e);
+        if (m_filling && !m_filling->polygons.empty()) handOver();
+        m_builders.wait();
+        std::exception_ptr first;
+        for (const std::unique_ptr<PolygonBatch>& batch : m_batches) {
+            for (PendingPolygon& p : batch->polygons) {
+                if (p.error && !first) first = p.error;
+                if (p.shape) m_objects[p.object].shape = std::move(p.shape);
+            }
+        }
+        m_batches.clear();
+        if (first) std::rethrow_exception(first);
     }
 
     /// Zero-area polygons (collinear or repeated vertices) can never be hit;
@@ -734,7 +779,9 @@ private:
     std::vector<NffLight> m_lights;
     std::vector<Material> m_materials;
     std::vector<Object> m_objects;
-    std::vector<PendingPolygon> m_pending;  ///< polygons read, not built yet
+    std::unique_ptr<PolygonBatch> m_filling;               ///< polygons read, not handed over
+    std::vector<std::unique_ptr<PolygonBatch>> m_batches;  ///< handed over, in file order
+    tbb::task_group m_builders;                            ///< the tasks building them
     std::vector<Vec3> m_vertices, m_normals;  ///< reused per polygon
     TriangleMesh m_meshes[2][2];                  ///< [patch][two-sided]
     std::vector<uint32_t> m_meshMaterials[2][2];  ///< per-face materials of each

@@ -407,6 +407,17 @@ TEST_CASE("nff: polygons are built after the text, and errors keep the file's or
         failureOf(kView + "pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 1 0 0 1\n");
     CHECK(patch.line == 8);
     CHECK(contains(patch.message, "not coplanar"));
+    // The same when the bad polygon's batch went to its builder while the
+    // reader was still going (batches hand over every ~1,024 vertices): its
+    // error, not the broken text's that follows, nor the later bad polygon's.
+    std::string handedOver = kView;
+    for (int i = 0; i < 300; ++i) handedOver += good;  // lines 8 .. 1507
+    handedOver += bad;                                // line 1508
+    for (int i = 0; i < 300; ++i) handedOver += good;
+    handedOver += bad + "s 0 0 zero 1\n";  // lines 3013 and 3018
+    const Failure early = failureOf(handedOver);
+    CHECK(early.line == 1508);
+    CHECK(contains(early.message, "not coplanar"));
     // Broken text before a bad polygon: the text's error.
     const Failure after = failureOf(kView + good + "s 0 0 zero 1\n" + bad);
     CHECK(after.line == 13);
