@@ -590,11 +590,15 @@ int renderCommand(const std::vector<std::string>& args) {
             std::fprintf(stderr, "%s", rayCapWarning(result, options, cli.frames ? frame : 0).c_str());
         }
         stats.filter = accel->filterCounts() - filterBefore;
+        // The objects' names go to the EXR's Cryptomatte manifest and the
+        // statistics only (SPD gears: 9,345 of them).
         std::vector<std::string> objectNames;
-        for (const Object& object : scene.objects) objectNames.push_back(object.name);
+        if (options.wantAovs || !cli.stats.empty())
+            for (const Object& object : scene.objects) objectNames.push_back(object.name);
         stats.objects.clear();
-        for (size_t k = 0; k < objectNames.size(); ++k)
-            stats.objects.push_back(matteName(objectNames, int(k)));
+        if (!cli.stats.empty())
+            for (size_t k = 0; k < objectNames.size(); ++k)
+                stats.objects.push_back(matteName(objectNames, int(k)));
         if (effects.textures())
             stats.textures = RenderStats::Textures{
                 textureFilterName(options.textures.filter),
@@ -618,7 +622,7 @@ int renderCommand(const std::vector<std::string>& args) {
         exr.accel = acceleratorName(options.accel);
         exr.frame = cli.frames ? frame : 0;
         exr.camera = cameraMatrices(scene.camera, options.width, options.height);
-        exr.objectNames = objectNames;
+        exr.objectNames = std::move(objectNames);  // its last use
         exr.matteRanks = matteRanksOfSampling(options);
         // A frame's files appear together or not at all: a failed PNG or
         // statistics write leaves an earlier render's EXR untouched too.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/json_string.h"
@@ -40,7 +41,7 @@ public:
     }
     void string(const char* key, const std::string& v) {
         item(key);
-        m_out += jsonString(v);
+        appendJsonString(m_out, v);
     }
     void beginArray(const char* key) {
         item(key);
@@ -68,11 +69,17 @@ public:
         m_out += '[';
         for (size_t i = 0; i < values.size(); ++i) {
             if (i) m_out += ", ";
-            m_out += jsonString(values[i]);
+            appendJsonString(m_out, values[i]);
         }
         m_out += ']';
     }
-    std::string str() const { return m_out + "\n"; }
+    /// Room for `bytes` of text (the objects' list can be a megabyte).
+    void reserve(size_t bytes) { m_out.reserve(bytes); }
+    /// The document, with a final newline; the writer is left empty.
+    std::string take() {
+        m_out += '\n';
+        return std::move(m_out);
+    }
 
 private:
     // JSON has no NaN/Inf; a timing can never be one, but stay valid anyway.
@@ -93,7 +100,7 @@ private:
         }
         m_first = false;
         if (key) {
-            m_out += jsonString(key);
+            appendJsonString(m_out, key);
             m_out += ": ";
         }
     }
@@ -118,6 +125,10 @@ std::string RenderStats::toJson() const {
     const RayType types[] = {RayType::Camera, RayType::Shadow, RayType::Reflection,
                              RayType::Refraction};
     JsonWriter json;
+    // About 90 bytes per object (id, name, Cryptomatte id), a few KB besides.
+    size_t objectBytes = 0;
+    for (const std::string& name : objects) objectBytes += 90 + name.size();
+    json.reserve(4096 + objectBytes);
     json.beginObject();
 
     json.beginObject("rays");
@@ -180,7 +191,7 @@ std::string RenderStats::toJson() const {
         json.endObject();
     }
     json.endObject();
-    return json.str();
+    return json.take();
 }
 
 }  // namespace raylab

@@ -17,6 +17,11 @@ TEST_CASE("jsonString: quotes, backslashes and control characters are escaped") 
     CHECK(jsonString(std::string("\x00\x01\x1f", 3)) == "\"\\u0000\\u0001\\u001f\"");
     CHECK(jsonString("\x7f/") == "\"\x7f/\"");                       // DEL and '/' need no escape
     CHECK(jsonString("caf\xc3\xa9 \xe2\x82\xac") == "\"caf\xc3\xa9 \xe2\x82\xac\"");  // UTF-8 as is
+    // Appended after what the output holds; plain runs between escapes kept.
+    std::string out = "[";
+    appendJsonString(out, "ab\"cd\nef");
+    appendJsonString(out, "");
+    CHECK(out == "[\"ab\\\"cd\\nef\"\"\"");
 }
 
 TEST_CASE("jsonString: every ASCII character and some UTF-8 read back unchanged") {
