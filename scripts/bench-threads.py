@@ -4,13 +4,15 @@
     scripts/bench-threads.py [--repeats 7] [--threads 1,2] [--raylab build/bin/raylab[,OTHER]]
                              [--nice N] [--output exr] -- SCENE [render flags ...]
 
-Runs `raylab render SCENE FLAGS -o OUT.exr --quiet --threads T --stats S.json`
+Runs `raylab render SCENE FLAGS -o OUT.exr --quiet --threads T`
 (--output png: OUT.png, the 8-bit output alone)
 for every thread count T (and every binary given), interleaved: each round runs
 every command once, in an order that rotates between rounds, after one untimed
 warm-up of each. Prints, per binary and thread count, the medians of the
 process's wall-clock time, its CPU time (user + system), and raylab's own
---stats phases (render, write), the speed-up of the wall time against the
+--stats phases (render, write; from an untimed run with --stats S.json after
+each timed one: the statistics file, which lists every object, is not part of
+the render), the speed-up of the wall time against the
 first thread count, and the write as a share of the render; then the same
 speed-up round by round (each round's first-count run against its N-thread
 run), median and range: less exposed to the machine's drift than the ratio of
@@ -80,10 +82,11 @@ def main():
     work = tempfile.mkdtemp(prefix="bench-threads-")
     cases = [(b, t) for b in binaries for t in threads]
 
-    def cmd(case):
+    def cmd(case, stats=False):
         b, t = case
-        return [b, "render"] + args.render + ["-o", os.path.join(work, "out." + args.output), "--quiet",
-                                              "--threads", str(t), "--stats", os.path.join(work, "s.json")]
+        return ([b, "render"] + args.render + ["-o", os.path.join(work, "out." + args.output), "--quiet",
+                                               "--threads", str(t)]
+                + (["--stats", os.path.join(work, "s.json")] if stats else []))
 
     samples = {c: [] for c in cases}
     for c in cases:
@@ -93,6 +96,7 @@ def main():
         k = r % len(cases)
         for c in cases[k:] + cases[:k]:
             wall, cpu = run(cmd(c))
+            run(cmd(c, stats=True))  # the phases, untimed
             with open(os.path.join(work, "s.json")) as fh:
                 st = json.load(fh)["time_s"]
             samples[c].append((wall, cpu, st["render"], st["write"]))
