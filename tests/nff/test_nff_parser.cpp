@@ -375,7 +375,7 @@ TEST_CASE("nff: vertex counts are checked against the limit and the bytes left")
                               "numbers (x y z), got 12 numbers ('p' starts on line 8)"));
 }
 
-TEST_CASE("nff: polygons are built after the text, and errors keep the file's order") {
+TEST_CASE("nff: polygons are built while the text is read, and errors keep the file's order") {
     const std::string bad = "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n";   // not coplanar
     const std::string good = "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";  // a unit square
     // The first of two bad polygons is reported, however many good ones
