@@ -173,24 +173,21 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
     // Row by row, right to left: the cells right of every boundary are
     // outside (no crossing to their right); each boundary passed adds its
     // crossing to those of the cells left of it. Grouped by row (a counting
-    // sort), then each row's few crossings by boundary, highest first.
+    // sort), then each row's crossings sorted by boundary, highest first
+    // (std::sort: a comb-like outline can put thousands in one row).
     std::vector<int> rowStart(size_t(m_ny) + 1, 0);
-    for (const Crossing& x : crossings) ++rowStart[size_t(x.row) + 1];
+    for (const Crossing& c : crossings) ++rowStart[size_t(c.row) + 1];
     for (int j = 0; j < m_ny; ++j) rowStart[size_t(j) + 1] += rowStart[size_t(j)];
     std::vector<Crossing> byRow(crossings.size());
     {
         std::vector<int> slot(rowStart.begin(), rowStart.end() - 1);
-        for (const Crossing& x : crossings) byRow[size_t(slot[size_t(x.row)]++)] = x;
+        for (const Crossing& c : crossings) byRow[size_t(slot[size_t(c.row)]++)] = c;
     }
     for (int j = 0; j < m_ny; ++j) {
-        // Insertion sort: a row has a handful of crossings.
-        Crossing* first = byRow.data() + rowStart[size_t(j)];
-        Crossing* last = byRow.data() + rowStart[size_t(j) + 1];
-        for (Crossing* p = first + 1; p < last; ++p)
-            for (Crossing* q = p; q > first && q[-1].boundary < q->boundary; --q)
-                std::swap(q[-1], *q);
-    }
-    for (int j = 0; j < m_ny; ++j) {
+        Crossing* const first = byRow.data() + rowStart[size_t(j)];
+        Crossing* const last = byRow.data() + rowStart[size_t(j) + 1];
+        std::sort(first, last,
+                  [](const Crossing& p, const Crossing& q) { return p.boundary > q.boundary; });
         Cell* row = cells.data() + size_t(j) * size_t(m_nx);
         int winding = 0, count = 0;
         int right = m_nx;  // cells [right, m_nx) are filled
@@ -199,9 +196,9 @@ void PolygonGrid::classifyRows(const std::vector<Vec2>& vertices, FillRule rule,
             std::fill(row + from, row + right, inside ? Cell::Inside : Cell::Outside);
             right = from;
         };
-        for (int k = rowStart[size_t(j)]; k < rowStart[size_t(j) + 1]; ++k) {
-            fill(byRow[size_t(k)].boundary);
-            winding += byRow[size_t(k)].sign;
+        for (const Crossing* c = first; c != last; ++c) {
+            fill(c->boundary);
+            winding += c->sign;
             ++count;
         }
         fill(0);

@@ -198,10 +198,20 @@ TEST_CASE("polygon grid: every non-Edge cell holds the winding of its centre, co
     std::vector<Vec2> gear, starOutline, square;
     for (const Vec3& p : gearFace()) gear.push_back({p.x, p.y});
     for (const Vec3& p : star({0, 0, 1})) starOutline.push_back({p.x, p.y});
-    // Vertices exactly on cell-centre lines and crossings exactly at centres.
+    // The plainest outline: whole rows of inside cells between two edges.
     for (const Vec2& p : {Vec2{0, 0}, Vec2{4, 0}, Vec2{4, 4}, Vec2{0, 4}}) square.push_back(p);
     shapes = {gear, starOutline, square};
     SplitMix64 rng(20261205);
+    // A comb: 150 teeth, 300 crossings in a row, each row's crossings found in
+    // rising order (an insertion sort's worst case).
+    std::vector<Vec2> comb;
+    for (int k = 0; k < 150; ++k) {
+        comb.push_back({double(k), 0});
+        comb.push_back({k + 0.5, 10});
+    }
+    comb.push_back({150, -1});
+    comb.push_back({0, -1});
+    shapes.push_back(comb);
     for (int t = 0; t < 40; ++t) {  // scribbles: self-intersecting, repeated x and y
         std::vector<Vec2> s;
         const int n = 3 + int(rng.uniform() * 60);
