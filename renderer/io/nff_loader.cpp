@@ -585,13 +585,16 @@ private:
         // Built by a task (handOver), its shape given by buildPolygons: the
         // object is added now, without it, so that the polygon names one that exists.
         addObject(patch ? "patch" : "polygon");
-        if (!m_filling) m_filling = std::make_unique<PolygonBatch>();
-        PendingPolygon& pending = m_filling->polygons.emplace_back();
+        // Made whole before it joins a batch: a failed copy (memory) must
+        // not leave a polygon without vertices for the build to report.
+        PendingPolygon pending;
         pending.object = m_objects.size() - 1;
         pending.line = m_entityLine;
         pending.sides = sides(false);
         pending.params.vertices = m_vertices;
         pending.params.normals = m_normals;
+        if (!m_filling) m_filling = std::make_unique<PolygonBatch>();
+        m_filling->polygons.push_back(std::move(pending));
         m_filling->vertices += m_vertices.size();
         if (m_filling->vertices >= kBatchVertices) handOver();
     }
