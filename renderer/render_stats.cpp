@@ -75,7 +75,7 @@ public:
     }
     /// Room for `bytes` of text (the objects' list can be a megabyte).
     void reserve(size_t bytes) { m_out.reserve(bytes); }
-    /// The document, with a final newline; the writer is left empty.
+    /// The document, with a final newline, moved out (the writer is done).
     std::string take() {
         m_out += '\n';
         return std::move(m_out);

@@ -31,7 +31,8 @@ display window; -V -GA: no console output; max_trace_level 5 is in the scene
 (SPD depth 5, the eye ray is level 1 in both). Neither writes statistics in
 the timed runs (POV-Ray: -GA; raylab: no --stats, whose JSON lists every
 object: 877 KB for gears). raylab's own breakdown (parse, build, render, write)
-comes from an untimed run with --stats after each round's timed ones (medians);
+comes from an untimed run with --stats after each scene's timed runs in every
+round (medians);
 "other" is the rest of that run's wall time (process start, Embree device and
 thread set-up, the statistics file, exit). CPU time (user + system, from wait4) is
 printed too: it is less disturbed than wall time when other jobs share the
@@ -301,8 +302,8 @@ def bench(args, scenes, raylab, povray, work):
                     wall, cpu = run_timed(ray_cmd(s), log)
                 samples[s][who].append(wall)
                 samples[s][who + "_cpu"].append(cpu)
-            # raylab's breakdown: one untimed run with --stats after the
-            # round's timed ones (so the two raylab binaries stay back to back)
+            # raylab's breakdown: one untimed run with --stats after this
+            # scene's timed runs (so the two raylab binaries stay back to back)
             stats_wall, _ = run_timed(ray_cmd(s, stats=True), log)
             with open(os.path.join(work, s + "_stats.json")) as fh:
                 st = json.load(fh)

@@ -10,9 +10,9 @@ for every thread count T (and every binary given), interleaved: each round runs
 every command once, in an order that rotates between rounds, after one untimed
 warm-up of each. Prints, per binary and thread count, the medians of the
 process's wall-clock time, its CPU time (user + system), and raylab's own
---stats phases (render, write; from an untimed run with --stats S.json after
-each timed one: the statistics file, which lists every object, is not part of
-the render), the speed-up of the wall time against the
+--stats phases (render, write; from untimed runs with --stats S.json after
+each round's timed ones: the statistics file, which lists every object, is not
+part of the render), the speed-up of the wall time against the
 first thread count, and the write as a share of the render; then the same
 speed-up round by round (each round's first-count run against its N-thread
 run), median and range: less exposed to the machine's drift than the ratio of
@@ -94,12 +94,16 @@ def main():
     load_before = os.getloadavg()
     for r in range(args.repeats):
         k = r % len(cases)
+        timed = {}
         for c in cases[k:] + cases[:k]:
-            wall, cpu = run(cmd(c))
-            run(cmd(c, stats=True))  # the phases, untimed
+            timed[c] = run(cmd(c))
+        # The phases, untimed, once the round's timed runs are done (so those
+        # stay back to back).
+        for c in cases[k:] + cases[:k]:
+            run(cmd(c, stats=True))
             with open(os.path.join(work, "s.json")) as fh:
                 st = json.load(fh)["time_s"]
-            samples[c].append((wall, cpu, st["render"], st["write"]))
+            samples[c].append((*timed[c], st["render"], st["write"]))
     load_after = os.getloadavg()
     med = statistics.median
     print("raylab render %s -o OUT.%s; %d interleaved rounds, medians; load average before %.1f %.1f %.1f, after %.1f %.1f %.1f%s"
