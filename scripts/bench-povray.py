@@ -26,16 +26,15 @@ and rounds), and the table shows the median wall-clock time of each whole
 process (start-up, parse, build, render, writing the picture) and the ratio
 of the medians, and beside it the median of each round's own ratio (less
 moved when the machine's speed drifts during the run). -A: no anti-aliasing
-(POV then traces one ray through each pixel centre; raylab's --spd traces the 513x513 pixel corners); -D: no
-display window; -V -GA: no console output; max_trace_level 5 is in the scene
-(SPD depth 5, the eye ray is level 1 in both). Neither writes statistics in
-the timed runs (POV-Ray: -GA; raylab: no --stats, whose JSON lists every
-object: 877 KB for gears). raylab's own breakdown (parse, build, render, write)
-comes from an untimed run with --stats after each scene's timed runs in every
-round (medians);
-"other" is the rest of that run's wall time (process start, Embree device and
-thread set-up, the statistics file, exit). CPU time (user + system, from wait4) is
-printed too: it is less disturbed than wall time when other jobs share the
+(POV then traces one ray through each pixel centre; raylab's --spd traces
+the 513x513 pixel corners); -D: no display window; -V -GA: no console output;
+max_trace_level 5 is in the scene (SPD depth 5, the eye ray is level 1 in
+both). Neither writes statistics in the timed runs (POV-Ray: -GA; raylab: no
+--stats, whose JSON lists every object: 877 KB for gears). raylab's own
+breakdown (parse, build, render, write) comes from an untimed run with --stats
+after each scene's timed runs in every round (medians); "other" is the rest of
+that run's wall time (process start, Embree device and thread set-up, the
+statistics file, exit). CPU time (user + system, from wait4) is printed too: it is less disturbed than wall time when other jobs share the
 cores; --nice -20 (root) runs each measured command in a session of its own
 whose scheduler group has niceness -20, so that it takes the cores from other
 jobs (Linux shares CPU time between sessions first, so a plain `nice` alone

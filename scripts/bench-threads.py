@@ -94,12 +94,11 @@ def main():
     load_before = os.getloadavg()
     for r in range(args.repeats):
         k = r % len(cases)
-        timed = {}
-        for c in cases[k:] + cases[:k]:
-            timed[c] = run(cmd(c))
+        order = cases[k:] + cases[:k]
+        timed = {c: run(cmd(c)) for c in order}
         # The phases, untimed, once the round's timed runs are done (so those
         # stay back to back).
-        for c in cases[k:] + cases[:k]:
+        for c in order:
             run(cmd(c, stats=True))
             with open(os.path.join(work, "s.json")) as fh:
                 st = json.load(fh)["time_s"]
