@@ -55,6 +55,9 @@ public:
     SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     /// "cylinder" when the radii are equal, "cone" otherwise.
     const char* kind() const override;
+    /// The side (and caps) bound a convex solid, the truncated cone, with
+    /// outward normals: only a ray leaving inwards can meet them again.
+    Revisit revisit() const override { return Revisit::Inward; }
 
     const Vec3& base() const { return m_base; }
     const Vec3& axis() const { return m_frame.n; }

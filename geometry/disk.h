@@ -26,6 +26,7 @@ public:
     /// coordinates (φ/2π from the frame's first tangent, ρ / radius).
     SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "disk"; }
+    Revisit revisit() const override { return Revisit::None; }  // planar
 
     const Vec3& centre() const { return m_centre; }
     const Vec3& normal() const { return m_frame.n; }

@@ -31,6 +31,7 @@ public:
     /// in scene units (not [0,1]²: the plane is unbounded in the scene's eyes).
     SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "plane"; }
+    Revisit revisit() const override { return Revisit::None; }  // planar
 
     const Vec3& point() const { return m_point; }
     const Vec3& normal() const { return m_frame.n; }

@@ -84,6 +84,9 @@ public:
     /// differences (mean-value coordinates have no compact derivative).
     SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "polygon"; }
+    /// Planar: the hit lies on the centroid plane, which is where a ray
+    /// leaving it starts from (offset off it) and which it never crosses again.
+    Revisit revisit() const override { return Revisit::None; }
 
     const std::vector<Vec3>& vertices() const { return m_vertices; }
     /// Per-vertex shading normals (NFF "pp"), or empty.

@@ -98,6 +98,21 @@ inline bool acceptsFacing(Sidedness s, bool frontFace) {
     return s == Sidedness::Both || (s == Sidedness::Outside) == frontFace;
 }
 
+/// Which rays that leave a point of a shape could meet the shape again:
+/// rays of a shape with one primitive, spawned by geometry/spawn.h's robust
+/// rule and tested in double precision (the offset keeps such a ray's start
+/// strictly on the side it leaves into; tests/geometry/test_revisit.cpp).
+/// Where none can, an accelerator may leave the shape's test out of the
+/// ray's queries (the integrator's Departure): the answers stay the same.
+enum class Revisit {
+    Any,     ///< any ray may (the default: curved non-convex surfaces, meshes)
+    Inward,  ///< only a ray leaving against the geometric normal: the boundary
+             ///< of a convex solid with outward normals. Leaving outwards, a ray
+             ///< stays in the open half-space beyond the tangent plane at its
+             ///< start, which the solid does not reach.
+    None,    ///< none: a planar shape, whose plane a ray leaving it never crosses again
+};
+
 class Shape {
 public:
     virtual ~Shape() = default;
@@ -167,6 +182,11 @@ public:
     /// Capability: the shape's triangles when an accelerator may take them as
     /// native triangles (Embree's triangle geometry), null otherwise.
     virtual const TriangleMesh* nativeTriangles() const { return nullptr; }
+
+    /// Which rays leaving the shape could meet it again (Revisit). Shapes
+    /// with more than one primitive answer Any: the accelerators skip whole
+    /// objects.
+    virtual Revisit revisit() const { return Revisit::Any; }
 
     /// Whether the shading normal differs from the geometric one somewhere
     /// (interpolated vertex normals): the "smooth_normals" effect.

@@ -34,6 +34,8 @@ public:
     /// the frame's first tangent, v = 1 - θ/π.
     SurfaceGeometry surface(const Ray& ray, const ShapeHit& hit, SurfaceDetail detail) const;
     const char* kind() const override { return "sphere"; }
+    /// A ball is convex: only a ray leaving inwards can meet its sphere again.
+    Revisit revisit() const override { return Revisit::Inward; }
 
     const Vec3& centre() const { return m_centre; }
     double radius() const { return m_radius; }

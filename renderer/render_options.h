@@ -45,6 +45,11 @@ struct RenderOptions {
     AcceleratorKind accel = AcceleratorKind::Embree;
     AccelOptions accelOptions;  ///< also the intersectors' accuracy knobs (precision, polygons)
     SpawnSettings spawn;      ///< self-intersection strategy
+    /// Name the object a spawned ray leaves where the ray cannot meet it
+    /// again (Shape::revisit; robust offset, double precision only), so that
+    /// the accelerator skips its test: the same picture, faster. Off only to
+    /// compare the two (tests).
+    bool departures = true;
     ShadowMode shadows = ShadowMode::Filtered;  ///< SPD's procedure: opaque
     AlphaMode alpha = AlphaMode::Background;    ///< what A means where rays miss (--alpha)
     TextureOptions textures;  ///< filter and footprint of texture lookups

@@ -45,6 +45,18 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
     m_kernel = table[m_effects.kernel & (kKernels - 1)];
     if (m_effects.textures()) m_textures = std::make_unique<TextureShading>(scene, options);
+    // Departures rest on the robust offset keeping a spawned ray's start off
+    // its surface, to the side it leaves into, and on the exact double test
+    // seeing it so; a fixed epsilon or float intersectors may meet their own
+    // surface again (the acne the accuracy study measures).
+    const bool departures = options.departures && options.spawn.mode == OffsetMode::Robust &&
+                            options.accelOptions.intersect.precision == Precision::Double;
+    m_revisit.assign(scene.objects.size(), Revisit::Any);
+    if (departures)
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            const Shape* shape = scene.objects[i].shape.get();
+            if (shape && shape->primitiveCount() == 1) m_revisit[i] = shape->revisit();
+        }
 }
 
 WhittedIntegrator::~WhittedIntegrator() = default;
@@ -88,7 +100,8 @@ Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& s
                                FirstHit* first, const std::optional<Hit>* cameraHit) const {
     // No footprint yet: trace computes the camera ray's at its hit (a miss
     // needs none) from the unit direction it has there.
-    if (!cameraHit) return trace<E>(cameraRay, tNear, 1, RayType::Camera, 1.0, state, first, nullptr);
+    if (!cameraHit)
+        return trace<E>(cameraRay, tNear, Departure{}, 1, RayType::Camera, 1.0, state, first, nullptr);
     countRay(state, RayType::Camera, 1);
     return traceHit<E>(cameraRay, *cameraHit, 1, RayType::Camera, 1.0, state, first, nullptr);
 }
@@ -125,6 +138,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             const bool facing = dot(n, l) > 0;
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
+            const Departure from = departure(si, toLight);
             state.counters.count(RayType::Shadow, depth + 1);
             ++state.spent.traced;
             OcclusionHint* hint = state.shadows ? &state.shadows->at(li, depth) : nullptr;
@@ -132,12 +146,13 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
             if (m_effects.filteredShadows) {
-                const Color through = hint ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, *hint)
-                                           : m_accel.transmittance(shadow.ray, shadow.tMin, tMax);
+                const Color through =
+                    hint ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, *hint)
+                         : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
                 if (through.isBlack() || !facing) continue;
                 arriving = saturated(arriving * saturated(through));
-            } else if ((hint ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, *hint)
-                             : m_accel.occluded(shadow.ray, shadow.tMin, tMax)) ||
+            } else if ((hint ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, *hint)
+                             : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from)) ||
                        !facing) {
                 continue;
             }
@@ -154,12 +169,12 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
 }
 
 template <unsigned E>
-Color WhittedIntegrator::trace(const Ray& ray, double tMin, int depth, RayType type,
-                               double weight, TraceState& state, FirstHit* first,
+Color WhittedIntegrator::trace(const Ray& ray, double tMin, Departure from, int depth,
+                               RayType type, double weight, TraceState& state, FirstHit* first,
                                const Footprint<E>* carried) const {
     countRay(state, type, depth);
-    return traceHit<E>(ray, m_accel.intersect(ray, tMin, kInf), depth, type, weight, state, first,
-                       carried);
+    return traceHit<E>(ray, m_accel.intersect(ray, tMin, kInf, from), depth, type, weight, state,
+                       first, carried);
 }
 
 template <unsigned E>
@@ -251,8 +266,8 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
                             else
                                 return {};
                         }();
-                        result += m.kt * trace<E>(r.ray, r.tMin, depth + 1, RayType::Refraction, w,
-                                                  state, nullptr, &next);
+                        result += m.kt * trace<E>(r.ray, r.tMin, departure(si, *t), depth + 1,
+                                                  RayType::Refraction, w, state, nullptr, &next);
                     }
                 } else {
                     reflectWeight = saturated(reflectWeight + m.kt);  // total internal reflection
@@ -272,8 +287,8 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
                     else
                         return {};
                 }();
-                result += reflectWeight * trace<E>(s.ray, s.tMin, depth + 1, RayType::Reflection, w,
-                                                   state, nullptr, &next);
+                result += reflectWeight * trace<E>(s.ray, s.tMin, departure(si, r), depth + 1,
+                                                   RayType::Reflection, w, state, nullptr, &next);
             }
         }
     }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
@@ -92,8 +93,9 @@ private:
     }
     /// Counts the ray, asks the accelerator for its hit and shades it (traceHit).
     template <unsigned E>
-    Color trace(const Ray& ray, double tMin, int depth, RayType type, double weight,
-                TraceState& state, FirstHit* first, const Footprint<E>* carried) const;
+    Color trace(const Ray& ray, double tMin, Departure from, int depth, RayType type,
+                double weight, TraceState& state, FirstHit* first,
+                const Footprint<E>* carried) const;
     /// The radiance a counted ray brings back from `hit` (the background for none).
     /// Inlined into trace and start: the ray tree's hot path keeps one call per ray.
     template <unsigned E>
@@ -108,6 +110,14 @@ private:
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      TraceState& state) const;
+    /// What a ray leaving hit `si` in direction `dir` departs from: the hit's
+    /// object where no such ray can meet it again (m_revisit), else nothing.
+    Departure departure(const SurfaceInteraction& si, const Vec3& dir) const {
+        const Revisit r = m_revisit[si.object];
+        return r == Revisit::None || (r == Revisit::Inward && dot(dir, si.ng) > 0)
+                   ? Departure{si.object}
+                   : Departure{};
+    }
     /// Whether the sample may trace one more reflection or refraction ray.
     bool mayBranch(SampleRays& spent) const;
 
@@ -122,6 +132,9 @@ private:
     RenderOptions m_options;
     EffectSet m_effects;
     bool m_prune = true;  ///< skip zero-weight rays (off for the general kernel and SPD)
+    /// Per object, which rays leaving it could meet it again (Shape::revisit;
+    /// Any for every object where RenderOptions::departures does not apply).
+    std::vector<Revisit> m_revisit;
     Kernel m_kernel = nullptr;
     std::unique_ptr<TextureShading> m_textures;  ///< only when the scene has textures
 };

@@ -25,11 +25,24 @@ struct OcclusionHint {
     uint32_t primitive = kNone;
 };
 
+/// The object a spawned ray leaves, named when the ray cannot meet it again
+/// (Shape::revisit): a query may then leave that object's test out, which
+/// changes no answer. kNone for camera rays and for rays that could return.
+struct Departure {
+    static constexpr uint32_t kNone = 0xffffffffu;
+    uint32_t object = kNone;
+};
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
     /// Closest hit with tMin < t < tMax.
-    virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const = 0;
+    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const {
+        return intersect(ray, tMin, tMax, Departure{});
+    }
+    /// The same, for a ray that leaves `from`.
+    virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
+                                         Departure from) const = 0;
     /// The most rays intersectPacket() takes at once.
     static constexpr int kPacketRays = 8;
     /// Whether intersectPacket() traces rays together, faster than one at a
@@ -46,25 +59,38 @@ public:
         for (int i = 0; i < count; ++i) out[i] = intersect(rays[i], tMin[i], tMax[i]);
     }
     /// Any hit with tMin < t < tMax (shadow feelers, opaque shadows).
-    virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
+    bool occluded(const Ray& ray, double tMin, double tMax) const {
+        return occluded(ray, tMin, tMax, Departure{});
+    }
+    virtual bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const = 0;
     /// occluded() with a hint: the accelerator may first ask the primitive the
     /// hint names, and names the occluder it finds in it. The answer is
     /// occluded()'s, whatever the hint holds. The default ignores the hint.
-    virtual bool occluded(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const {
+    bool occluded(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const {
+        return occluded(ray, tMin, tMax, Departure{}, hint);
+    }
+    virtual bool occluded(const Ray& ray, double tMin, double tMax, Departure from,
+                          OcclusionHint& hint) const {
         (void)hint;
-        return occluded(ray, tMin, tMax);
+        return occluded(ray, tMin, tMax, from);
     }
     /// \brief What a shadow feeler carries from tMin to tMax (filtered shadows):
     ///   the product of the SurfaceFilter::transmission of every surface it
     ///   crosses, black at the first opaque one. Without transmitters in the
     ///   scene it is occluded() as black or white.
-    virtual Color transmittance(const Ray& ray, double tMin, double tMax) const = 0;
+    Color transmittance(const Ray& ray, double tMin, double tMax) const {
+        return transmittance(ray, tMin, tMax, Departure{});
+    }
+    virtual Color transmittance(const Ray& ray, double tMin, double tMax, Departure from) const = 0;
     /// transmittance() with a hint, as occluded() with one: the same answer
     /// whatever the hint holds. The default ignores the hint.
-    virtual Color transmittance(const Ray& ray, double tMin, double tMax,
+    Color transmittance(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const {
+        return transmittance(ray, tMin, tMax, Departure{}, hint);
+    }
+    virtual Color transmittance(const Ray& ray, double tMin, double tMax, Departure from,
                                 OcclusionHint& hint) const {
         (void)hint;
-        return transmittance(ray, tMin, tMax);
+        return transmittance(ray, tMin, tMax, from);
     }
     /// "embree" or "naive".
     virtual std::string name() const = 0;

@@ -207,7 +207,8 @@ std::optional<Hit> EmbreeAccelerator::decode(const RTCRayHit& rayhit,
                rayhit.hit.v};
 }
 
-std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
+std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, double tMax,
+                                                Departure from) const {
     RTCRayHit rayhit;
     if (!toEmbreeRay(ray, tMin, tMax, rayhit.ray)) return std::nullopt;
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -215,6 +216,7 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);
+    ctx.departed = from.object;
     rtcIntersect1(m_scene.get(), &ctx.rtc, &rayhit);
     const auto hit = decode(rayhit, ctx);
     // A triangle hit on (or within float error of) an edge goes to whichever
@@ -292,22 +294,25 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
     }
 }
 
-bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {
+bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Departure from) const {
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);
+    ctx.departed = from.object;
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     return r.tfar < 0.0f;
 }
 
-Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax) const {
-    if (!m_filter.active()) return occluded(ray, tMin, tMax) ? Color{} : Color(1.0);
+Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
+                                        Departure from) const {
+    if (!m_filter.active()) return occluded(ray, tMin, tMax, from) ? Color{} : Color(1.0);
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return Color(1.0);
     TransmittanceAccumulator shadow;
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);
+    ctx.departed = from.object;
     ctx.shadow = &shadow;
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     // An opaque surface (filtered or not) ended the query; otherwise the
@@ -323,7 +328,7 @@ void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, dou
     if (m_filter.active()) ctx.filter = &m_filter;
 }
 
-bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
+bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Departure from,
                                  OcclusionHint& hint) const {
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
@@ -333,11 +338,13 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
         // would give. A cut-out would bypass its filter here, so a hint
         // naming one is ignored: the walk below asks the filter.
         const EmbreeUserTable::Entry& e = m_user.entries[hint.primitive];
-        if (!e.cutsOut && e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options))
+        if (!e.cutsOut && e.object != from.object &&
+            e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options))
             return true;
     }
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax);
+    ctx.departed = from.object;
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     // A lit point forgets the occluder: its neighbours are likely lit too,
     // and a test of a primitive that does not block is wasted.
@@ -345,10 +352,10 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax,
     return r.tfar < 0.0f;
 }
 
-Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
+Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax, Departure from,
                                         OcclusionHint& hint) const {
-    if (!m_filter.active()) return occluded(ray, tMin, tMax, hint) ? Color{} : Color(1.0);
-    return transmittance(ray, tMin, tMax);
+    if (!m_filter.active()) return occluded(ray, tMin, tMax, from, hint) ? Color{} : Color(1.0);
+    return transmittance(ray, tMin, tMax, from);
 }
 
 std::unique_ptr<Accelerator> makeEmbreeAccelerator(const Scene& scene,

@@ -39,7 +39,14 @@ public:
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
 
-    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
+    using Accelerator::intersect;
+    using Accelerator::occluded;
+    using Accelerator::transmittance;
+    /// The departed object's user-geometry entries answer "no hit" without
+    /// their test (EmbreeQueryContext::departed); native triangles are
+    /// tested as ever (Shape::revisit names no mesh).
+    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
+                                 Departure from) const override;
     /// One rtcIntersect8 packet, each lane's analytic shapes tested with its
     /// exact double ray and each lane's triangle hit near an edge resolved
     /// as intersect() resolves it: the same answers as intersect(). (Embree
@@ -49,15 +56,16 @@ public:
     void intersectPacket(const Ray* rays, const double* tMin, const double* tMax, int count,
                          std::optional<Hit>* out) const override;
     bool tracesPackets() const override { return true; }
-    bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const override;
     /// The hint names a user-geometry primitive (its entry in the table): its
     /// exact Shape::occluded test is exactly what the callback would run for
     /// it, so when it reports a hit, Embree would too (its padded box contains
     /// the primitive) and the traversal is skipped.
-    bool occluded(const Ray& ray, double tMin, double tMax, OcclusionHint& hint) const override;
-    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
+    bool occluded(const Ray& ray, double tMin, double tMax, Departure from,
+                  OcclusionHint& hint) const override;
+    Color transmittance(const Ray& ray, double tMin, double tMax, Departure from) const override;
     /// Without a surface filter, occluded() with the hint as black or white.
-    Color transmittance(const Ray& ray, double tMin, double tMax,
+    Color transmittance(const Ray& ray, double tMin, double tMax, Departure from,
                         OcclusionHint& hint) const override;
     std::string name() const override { return "embree"; }
     double buildSeconds() const override { return m_buildSeconds; }

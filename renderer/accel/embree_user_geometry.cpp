@@ -99,6 +99,7 @@ inline void intersectLane(const RTCIntersectFunctionNArguments* args,
     float& tfar = RTCRayN_tfar(rays, n, i);
     std::optional<ShapeHit> h;
     if constexpr (Exact) {
+        if (e.object == ctx.departed) return;  // the ray cannot meet it again
         // Strict tMin < t < best-so-far in double (Shape contract). Exact
         // ties (coplanar surfaces, e.g. a cone's cap on the floor) go to
         // the lower entry (scene order), as in the naive loop, which visits
@@ -200,6 +201,7 @@ inline void occludedLane(const RTCOccludedFunctionNArguments* args, const Embree
                          EmbreeQueryContext& ctx, unsigned n, unsigned i) {
     RTCRayN* rays = args->ray;
     const EmbreeUserTable::Entry& e = table.entries[args->primID];
+    if (Exact && e.object == ctx.departed) return;  // the ray cannot meet it again
     float& tfar = RTCRayN_tfar(rays, n, i);
     // A transmitter stops an opaque feeler at its first crossing, which is
     // what its exact test answers; only filtered shadows collect its kt.

@@ -46,6 +46,9 @@ struct EmbreeQueryContext {
     /// Occlusion queries: the entry whose exact test found the occluder, or
     /// OcclusionHint::kNone (none yet, or a native triangle occluded).
     uint32_t occluderEntry = 0xffffffffu;
+    /// The object the ray departs from (Departure), or kNone: its entries
+    /// answer "no hit" without their test (exact path only).
+    uint32_t departed = 0xffffffffu;
     /// A packet's exact lanes (EmbreeAccelerator::intersectPacket): the
     /// double ray, interval and best hit of the ray whose id is i are
     /// lanes[i]'s; null for single rays.
@@ -63,6 +66,7 @@ struct EmbreeQueryContext {
         filter = nullptr;
         shadow = nullptr;
         occluderEntry = 0xffffffffu;
+        departed = 0xffffffffu;
         lanes = nullptr;
     }
 };

@@ -48,14 +48,15 @@ std::optional<Hit> NaiveAccelerator::filteredHit(uint32_t i, const Ray& ray, dou
     return best;
 }
 
-std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, double tMax) const {
+std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, double tMax,
+                                               Departure from) const {
     if (!traceable(ray, tMin, tMax)) return std::nullopt;
     std::optional<Hit> best;
     // Each hit shrinks the interval, so later objects only count if closer;
     // on an exact tie the earlier object in scene order wins.
     for (uint32_t i = 0; i < m_shapes.size(); ++i) {
         const Shape* shape = m_shapes[i];
-        if (!shape) continue;
+        if (!shape || i == from.object) continue;
         if (m_filter.filters(i)) {
             if (const auto h = filteredHit(i, ray, tMin, tMax)) {
                 tMax = h->t;
@@ -69,11 +70,11 @@ std::optional<Hit> NaiveAccelerator::intersect(const Ray& ray, double tMin, doub
     return best;
 }
 
-bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax) const {
+bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax, Departure from) const {
     if (!traceable(ray, tMin, tMax)) return false;
     for (uint32_t i = 0; i < m_shapes.size(); ++i) {
         const Shape* shape = m_shapes[i];
-        if (!shape) continue;
+        if (!shape || i == from.object) continue;
         // Transmitters are opaque here (opaque shadows); only holes let light by.
         if (m_filter.filters(i) ? filteredHit(i, ray, tMin, tMax).has_value()
                                 : shape->occludedAny(ray, tMin, tMax, m_options))
@@ -82,13 +83,14 @@ bool NaiveAccelerator::occluded(const Ray& ray, double tMin, double tMax) const 
     return false;
 }
 
-Color NaiveAccelerator::transmittance(const Ray& ray, double tMin, double tMax) const {
-    if (!m_filter.active()) return occluded(ray, tMin, tMax) ? Color{} : Color(1.0);
+Color NaiveAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
+                                      Departure from) const {
+    if (!m_filter.active()) return occluded(ray, tMin, tMax, from) ? Color{} : Color(1.0);
     if (!traceable(ray, tMin, tMax)) return Color(1.0);
     TransmittanceAccumulator acc;
     for (uint32_t i = 0; i < m_shapes.size(); ++i) {
         const Shape* shape = m_shapes[i];
-        if (!shape) continue;
+        if (!shape || i == from.object) continue;
         if (!m_filter.filters(i)) {
             if (shape->occludedAny(ray, tMin, tMax, m_options)) return Color{};
             continue;

@@ -22,9 +22,14 @@ public:
     /// \throws std::invalid_argument for a shape that fails validate().
     explicit NaiveAccelerator(const Scene& scene, const AccelOptions& options = {});
 
-    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
-    bool occluded(const Ray& ray, double tMin, double tMax) const override;
-    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
+    using Accelerator::intersect;
+    using Accelerator::occluded;
+    using Accelerator::transmittance;
+    /// The object a ray departs from (Departure) is left out of the loop.
+    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
+                                 Departure from) const override;
+    bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const override;
+    Color transmittance(const Ray& ray, double tMin, double tMax, Departure from) const override;
     std::string name() const override { return "naive"; }
     double buildSeconds() const override { return m_buildSeconds; }
     FilterCounts filterCounts() const override { return m_filter.counts(); }

@@ -72,8 +72,9 @@ void RayRecorder::pushHit(ThreadState& ts, const Ray& ray, const Hit& hit, int d
     ts.path.push_back(e);
 }
 
-std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tMax) const {
-    const std::optional<Hit> hit = m_inner.intersect(ray, tMin, tMax);
+std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tMax,
+                                          Departure from) const {
+    const std::optional<Hit> hit = m_inner.intersect(ray, tMin, tMax, from);
     ThreadState& ts = m_threads.local();
     RecordedRay r;
     r.ray = ray;
@@ -111,14 +112,14 @@ std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tM
     return hit;
 }
 
-bool RayRecorder::occluded(const Ray& ray, double tMin, double tMax) const {
-    const bool result = m_inner.occluded(ray, tMin, tMax);
+bool RayRecorder::occluded(const Ray& ray, double tMin, double tMax, Departure from) const {
+    const bool result = m_inner.occluded(ray, tMin, tMax, from);
     recordShadowRay(ray, tMin, tMax, result);
     return result;
 }
 
-Color RayRecorder::transmittance(const Ray& ray, double tMin, double tMax) const {
-    const Color result = m_inner.transmittance(ray, tMin, tMax);
+Color RayRecorder::transmittance(const Ray& ray, double tMin, double tMax, Departure from) const {
+    const Color result = m_inner.transmittance(ray, tMin, tMax, from);
     // Replayed as an occlusion query: bare Embree has no filters.
     recordShadowRay(ray, tMin, tMax, result.isBlack());
     return result;

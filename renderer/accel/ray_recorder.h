@@ -50,10 +50,17 @@ public:
     ///   identify camera rays and parents). All three must outlive the recorder.
     RayRecorder(const Accelerator& inner, const Scene& scene, const RenderOptions& options);
 
-    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override;
-    bool occluded(const Ray& ray, double tMin, double tMax) const override;
+    using Accelerator::intersect;
+    using Accelerator::occluded;
+    using Accelerator::transmittance;
+    /// Each query goes to the wrapped accelerator as asked (Departure
+    /// included); the record holds the ray alone, which a replay asks
+    /// without one, as bare Embree knows none, and gets the same answer.
+    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
+                                 Departure from) const override;
+    bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const override;
     /// Recorded as an occlusion query answered "occluded" when nothing gets through.
-    Color transmittance(const Ray& ray, double tMin, double tMax) const override;
+    Color transmittance(const Ray& ray, double tMin, double tMax, Departure from) const override;
     /// The wrapped accelerator's name.
     std::string name() const override { return m_inner.name(); }
     double buildSeconds() const override { return m_inner.buildSeconds(); }

@@ -40,9 +40,10 @@ class ThrowingAccelerator final : public test::ForwardingAccelerator {
 public:
     ThrowingAccelerator(const Accelerator& inner, long n)
         : ForwardingAccelerator(inner), m_throwAt(n) {}
-    std::optional<Hit> intersect(const Ray& r, double a, double b) const override {
+    using ForwardingAccelerator::intersect;
+    std::optional<Hit> intersect(const Ray& r, double a, double b, Departure from) const override {
         if (++m_calls == m_throwAt) throw std::bad_alloc();
-        return ForwardingAccelerator::intersect(r, a, b);
+        return ForwardingAccelerator::intersect(r, a, b, from);
     }
     double buildSeconds() const override { return 0; }
 

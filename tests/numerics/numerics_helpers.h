@@ -110,23 +110,30 @@ struct Query {
 };
 
 /// A decorator that forwards every query and records it (thread-safe; use
-/// one render thread when the order matters).
+/// one render thread when the order matters). It asks the inner accelerator
+/// without the Departure the integrator names: the tests that record check
+/// that a ray does not meet its own surface again, which a query leaving that
+/// surface's test out could not show.
 class RecordingAccelerator final : public Accelerator {
 public:
     explicit RecordingAccelerator(const Accelerator& inner) : m_inner(inner) {}
-    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax) const override {
+    using Accelerator::intersect;
+    using Accelerator::occluded;
+    using Accelerator::transmittance;
+    std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
+                                 Departure) const override {
         Query q{ray, tMin, tMax, false, m_inner.intersect(ray, tMin, tMax), false};
         std::lock_guard<std::mutex> lock(m_mutex);
         m_queries.push_back(q);
         return q.hit;
     }
-    bool occluded(const Ray& ray, double tMin, double tMax) const override {
+    bool occluded(const Ray& ray, double tMin, double tMax, Departure) const override {
         Query q{ray, tMin, tMax, true, std::nullopt, m_inner.occluded(ray, tMin, tMax)};
         std::lock_guard<std::mutex> lock(m_mutex);
         m_queries.push_back(q);
         return q.occluded;
     }
-    Color transmittance(const Ray& ray, double tMin, double tMax) const override {
+    Color transmittance(const Ray& ray, double tMin, double tMax, Departure) const override {
         const Color c = m_inner.transmittance(ray, tMin, tMax);
         Query q{ray, tMin, tMax, true, std::nullopt, c.isBlack()};
         std::lock_guard<std::mutex> lock(m_mutex);
@@ -146,8 +153,11 @@ private:
 
 /// Renders `scene` with `overrides` (accelerator built as `raylab render`
 /// builds it: geometry relative to the eye).
-inline RenderResult renderWith(Scene& scene, RenderOverrides overrides) {
-    const RenderOptions options = resolveRenderOptions(scene, overrides);
+/// `departures` off: every spawned ray is tested against its own surface too
+/// (RenderOptions::departures), as the self-intersection tests need.
+inline RenderResult renderWith(Scene& scene, RenderOverrides overrides, bool departures = true) {
+    RenderOptions options = resolveRenderOptions(scene, overrides);
+    options.departures = departures;
     const auto accel = makeAccelerator(options.accel, scene, options.accelOptions);
     return render(scene, *accel, options, analyseEffects(scene, options));
 }

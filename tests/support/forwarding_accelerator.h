@@ -15,20 +15,26 @@ namespace raylab::test {
 class ForwardingAccelerator : public Accelerator {
 public:
     explicit ForwardingAccelerator(const Accelerator& inner) : m_inner(inner) {}
-    std::optional<Hit> intersect(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.intersect(r, tMin, tMax);
+    using Accelerator::intersect;
+    using Accelerator::occluded;
+    using Accelerator::transmittance;
+    std::optional<Hit> intersect(const Ray& r, double tMin, double tMax,
+                                 Departure from) const override {
+        return m_inner.intersect(r, tMin, tMax, from);
     }
-    bool occluded(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.occluded(r, tMin, tMax);
+    bool occluded(const Ray& r, double tMin, double tMax, Departure from) const override {
+        return m_inner.occluded(r, tMin, tMax, from);
     }
-    bool occluded(const Ray& r, double tMin, double tMax, OcclusionHint& h) const override {
-        return m_inner.occluded(r, tMin, tMax, h);
+    bool occluded(const Ray& r, double tMin, double tMax, Departure from,
+                  OcclusionHint& h) const override {
+        return m_inner.occluded(r, tMin, tMax, from, h);
     }
-    Color transmittance(const Ray& r, double tMin, double tMax) const override {
-        return m_inner.transmittance(r, tMin, tMax);
+    Color transmittance(const Ray& r, double tMin, double tMax, Departure from) const override {
+        return m_inner.transmittance(r, tMin, tMax, from);
     }
-    Color transmittance(const Ray& r, double tMin, double tMax, OcclusionHint& h) const override {
-        return m_inner.transmittance(r, tMin, tMax, h);
+    Color transmittance(const Ray& r, double tMin, double tMax, Departure from,
+                        OcclusionHint& h) const override {
+        return m_inner.transmittance(r, tMin, tMax, from, h);
     }
     std::string name() const override { return m_inner.name(); }
     double buildSeconds() const override { return m_inner.buildSeconds(); }
