@@ -27,7 +27,8 @@ struct OcclusionHint {
 
 /// The object a spawned ray leaves, named when the ray cannot meet it again
 /// (Shape::revisit): a query may then leave that object's test out, which
-/// changes no answer. kNone for camera rays and for rays that could return.
+/// changes no answer; an accelerator may as well ignore it. kNone for camera
+/// rays and for rays that could return.
 struct Departure {
     static constexpr uint32_t kNone = 0xffffffffu;
     uint32_t object = kNone;

@@ -27,6 +27,7 @@ struct EmbreeReplay::Impl {
         if (!accel->toEmbreeRay(r.ray, r.tMin, r.tMax, rayhit.ray)) return;  // a miss
         EmbreeQueryContext ctx;
         ctx.init(&r.ray, r.tMin, r.tMax);
+        ctx.departed = r.departed;  // the same callback work as the render's query
         if (r.occlusion) {
             rtcOccluded1(scene, &ctx.rtc, &rayhit.ray);
             results[i] = rayhit.ray.tfar < 0.0f;

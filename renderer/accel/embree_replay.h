@@ -5,7 +5,8 @@
 // that tools need (`raylab bench limit`). Each ray is converted exactly as
 // EmbreeAccelerator converts it (float, relative to its origin, mask all
 // ones), at its query (any caller must), and every query passes the same extended context (the exact double
-// ray for the analytic shapes), so the work inside Embree is the renderer's.
+// ray for the analytic shapes, and the object the render's query left out,
+// its Departure), so the work inside Embree is the renderer's.
 // Embree types stay in the .cpp: this header is safe to include anywhere.
 
 #include <tbb/blocked_range.h>

@@ -81,6 +81,7 @@ std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tM
     r.tMin = tMin;
     r.tMax = tMax;
     r.hit = hit.has_value();
+    r.departed = from.object;
     if (isCameraRay(ray)) {
         ts.path.clear();
         ts.treeStarts.push_back(ts.rays.size());
@@ -114,18 +115,19 @@ std::optional<Hit> RayRecorder::intersect(const Ray& ray, double tMin, double tM
 
 bool RayRecorder::occluded(const Ray& ray, double tMin, double tMax, Departure from) const {
     const bool result = m_inner.occluded(ray, tMin, tMax, from);
-    recordShadowRay(ray, tMin, tMax, result);
+    recordShadowRay(ray, tMin, tMax, from, result);
     return result;
 }
 
 Color RayRecorder::transmittance(const Ray& ray, double tMin, double tMax, Departure from) const {
     const Color result = m_inner.transmittance(ray, tMin, tMax, from);
     // Replayed as an occlusion query: bare Embree has no filters.
-    recordShadowRay(ray, tMin, tMax, result.isBlack());
+    recordShadowRay(ray, tMin, tMax, from, result.isBlack());
     return result;
 }
 
-void RayRecorder::recordShadowRay(const Ray& ray, double tMin, double tMax, bool result) const {
+void RayRecorder::recordShadowRay(const Ray& ray, double tMin, double tMax, Departure from,
+                                  bool result) const {
     ThreadState& ts = m_threads.local();
     RecordedRay r;
     r.ray = ray;
@@ -134,6 +136,7 @@ void RayRecorder::recordShadowRay(const Ray& ray, double tMin, double tMax, bool
     r.type = RayType::Shadow;
     r.occlusion = true;
     r.hit = result;
+    r.departed = from.object;
     // Shadow feelers leave the latest hit, before any of its children.
     const long parent = findParent(ts.path, ray, tMin, m_options.spawn);
     if (parent < 0) {

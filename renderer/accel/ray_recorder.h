@@ -41,6 +41,9 @@ struct RecordedRay {
     int depth = 1;           ///< camera ray = 1, as in RayCounters
     bool occlusion = false;  ///< occluded() (shadow feeler) rather than intersect()
     bool hit = false;        ///< intersect(): a hit was found; occluded(): occluded
+    /// The object the query left out (Departure), which a replay leaves out
+    /// too, so that it asks the same work of Embree's callbacks.
+    uint32_t departed = Departure::kNone;
 };
 
 class RayRecorder final : public Accelerator {
@@ -53,9 +56,8 @@ public:
     using Accelerator::intersect;
     using Accelerator::occluded;
     using Accelerator::transmittance;
-    /// Each query goes to the wrapped accelerator as asked (Departure
-    /// included); the record holds the ray alone, which a replay asks
-    /// without one, as bare Embree knows none, and gets the same answer.
+    /// Each query goes to the wrapped accelerator as asked; the record keeps
+    /// its Departure for the replays.
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
                                  Departure from) const override;
     bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const override;
@@ -103,7 +105,8 @@ private:
     static long findParent(const std::vector<PathEntry>& path, const Ray& ray, double tMin,
                            const SpawnSettings& spawn);
     void pushHit(ThreadState& ts, const Ray& ray, const Hit& hit, int depth) const;
-    void recordShadowRay(const Ray& ray, double tMin, double tMax, bool occluded) const;
+    void recordShadowRay(const Ray& ray, double tMin, double tMax, Departure from,
+                         bool occluded) const;
 
     const Accelerator& m_inner;
     const Scene& m_scene;

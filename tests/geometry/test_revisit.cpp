@@ -3,8 +3,9 @@
 // (renderer Departure), so the claim must hold for every ray the robust
 // offset spawns (geometry/spawn.h) and the exact double test sees: checked
 // here on hits all over each kind of shape, near the origin and 1e5 from it,
-// at unit size and at 1e-3, for directions anywhere and within 1e-9 of the
-// tangent plane. The other half is checked too: a ray leaving a closed
+// at unit size and at 1e-3, hit from outside and from inside, for directions
+// anywhere and within 1e-9 of the tangent plane (cones of both slopes, pointed
+// at either end). The other half is checked too: a ray leaving a closed
 // convex shape inwards does meet it again, so Revisit::Inward is no more
 // generous than it must be.
 
@@ -54,6 +55,13 @@ std::vector<Kind> kinds(const Vec3& c, double size) {
     frustum.apexRadius = 0.3 * size;
     frustum.capped = false;
     v.push_back({"open truncated cone", makeCone(frustum), Revisit::Inward, false});
+    ConeParams widening = cylinder;  // the wide end at the apex
+    widening.baseRadius = 0.2 * size;
+    widening.apexRadius = 0.9 * size;
+    v.push_back({"capped cone widening to its apex", makeCone(widening), Revisit::Inward, true});
+    ConeParams pointedBase = cylinder;  // the point at the base
+    pointedBase.baseRadius = 0;
+    v.push_back({"capped cone pointed at its base", makeCone(pointedBase), Revisit::Inward, true});
     v.push_back({"disk", makeDisk(c, normalize(Vec3{-0.1, 0.3, 1}), size), Revisit::None, false});
     v.push_back({"plane", makePlane(c, normalize(Vec3{0.2, 1, 0.1}), 10 * size), Revisit::None,
                  false});
@@ -90,7 +98,11 @@ Count leaveFromHits(const Shape& shape, const Vec3& c, double size, uint64_t see
     spawn.reference = eye;
     Count n;
     for (int i = 0; i < 1500; ++i) {
-        const Vec3 from = i % 2 ? eye : c + rng.direction() * (5 * size);
+        // From outside (the eye, anywhere around) and from inside (a ray that
+        // entered a closed shape meets its far side from within).
+        const Vec3 from = i % 3 == 0   ? eye
+                          : i % 3 == 1 ? c + rng.direction() * (5 * size)
+                                       : c + rng.point(-0.2, 0.2) * size;
         const Ray ray{from, c + rng.point(-1.2, 1.2) * size - from};
         const auto h = shape.intersect(0, ray, 0, kInf, opt);
         if (!h) continue;

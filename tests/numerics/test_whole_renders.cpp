@@ -4,11 +4,13 @@
 // untranslated one thanks to camera-relative Embree data and spawn offsets
 // (and measurably worse without them); a scene scaled by 1e-6 ... 1e4
 // renders like the unit-size one; Embree's ISA changes triangle hits
-// only within a documented tolerance (NUMERICS.md §4 (25)).
+// only within a documented tolerance (NUMERICS.md §4 (25)); departures
+// (renderer/accel/accelerator.h) change no pixel of any of those scenes.
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -77,6 +79,41 @@ TEST_CASE("whole renders: every shipped scene is free of NaN/Inf, default and st
             CHECK(nonFiniteValues(r.film) == 0);
             CHECK(r.rays.total(RayType::Camera) > 0);
         }
+    }
+}
+
+TEST_CASE("whole renders: departures change no pixel of any shipped or SPD scene") {
+    // RenderOptions::departures off tests every spawned ray against the
+    // surface it leaves too; on (the default) leaves that test out where the
+    // ray cannot meet the surface again. SPD files also with --spd (corner
+    // rays, every zero-weight ray).
+    std::vector<std::pair<std::string, bool>> cases;
+    for (const std::string& f : sceneFiles(fs::path(RAYLAB_SOURCE_DIR) / "scenes", {".json"}))
+        cases.emplace_back(f, false);
+    for (const std::string& f :
+         sceneFiles(fs::path(RAYLAB_SOURCE_DIR) / "scenes" / "meshes", {".obj"}))
+        cases.emplace_back(f, false);
+    for (const std::string& f :
+         sceneFiles(fs::path(RAYLAB_SHARED_DIR) / "scenes" / "spd", {".nff"}))
+        if (f.find("balls_s5") == std::string::npos)
+            for (bool spd : {false, true}) cases.emplace_back(f, spd);
+    REQUIRE(cases.size() >= 3);
+    for (const auto& [file, spd] : cases) {
+        Scene scene = loadScene(file);
+        const std::string name = file;
+        const bool spdMode = spd;
+        CAPTURE(name);
+        CAPTURE(spdMode);
+        RenderOverrides o;
+        o.width = 48;
+        o.height = 36;
+        o.spd = spd;
+        const RenderResult off = renderWith(scene, o, false);
+        const RenderResult on = renderWith(scene, o, true);
+        REQUIRE(on.film.rgba.size() == off.film.rgba.size());
+        CHECK(std::memcmp(on.film.rgba.data(), off.film.rgba.data(),
+                          on.film.rgba.size() * sizeof(float)) == 0);
+        CHECK(on.rays.byDepth == off.rays.byDepth);
     }
 }
 

@@ -42,8 +42,10 @@ public:
     void run(int threads, size_t begin, size_t end) {
         const auto one = [&](size_t i) {
             const RecordedRay& r = m_rays[i];
-            m_results[i] = r.occlusion ? m_accel.occluded(r.ray, r.tMin, r.tMax)
-                                       : m_accel.intersect(r.ray, r.tMin, r.tMax).has_value();
+            const Departure from{r.departed};
+            m_results[i] = r.occlusion
+                               ? m_accel.occluded(r.ray, r.tMin, r.tMax, from)
+                               : m_accel.intersect(r.ray, r.tMin, r.tMax, from).has_value();
         };
         forEachReplayedRay(threads, begin, end, one);
     }
