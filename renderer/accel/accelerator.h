@@ -34,6 +34,10 @@ struct Departure {
     uint32_t object = kNone;
 };
 
+/// Each query has a short form without a Departure (camera rays, tests,
+/// tools) that asks the virtual form with none; an implementation overrides
+/// the virtual forms and keeps the short ones visible with
+/// `using Accelerator::intersect;` (and occluded, transmittance).
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
