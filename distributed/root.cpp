@@ -82,19 +82,25 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
         ++haveCount;
     };
 
-    for (;;) {
-        bool active = false;
+    // Rank 0's finished items, and its render threads' first error.
+    const auto collectLocal = [&] {
+        bool any = false;
         for (int item : local.takeDone()) {
             accept(item, 0);
             ++localItems;
             localFinish = secondsSince(job.start);
-            active = true;
+            any = true;
         }
         try {
             local.rethrowIfFailed();
         } catch (const std::exception& e) {
             throw std::runtime_error(rankName(0, job.mpi.host()) + ": " + e.what());
         }
+        return any;
+    };
+
+    for (;;) {
+        bool active = collectLocal();
         local.refill();  // the first chunks; later the render threads pull their own
 
         for (int r = 1; r < ranks; ++r) {
@@ -162,6 +168,11 @@ RenderResult runRoot(const FrameJob& job, const ProgressCallback& progress,
                 if (!peers[size_t(r)].finished) net.post(r, kTagAbort, messageHeader(job.epoch));
         }
         if (allFinished && local.idle()) {
+            // Collected again after idle() was read: an item rank 0 finished
+            // since the top of this pass is in the done list now (it is
+            // listed before it stops counting as in flight), and would
+            // otherwise look lost.
+            collectLocal();
             if (stopping || haveCount == items) break;
             if (remaining() == 0)
                 throw std::runtime_error(std::to_string(items - haveCount) +
