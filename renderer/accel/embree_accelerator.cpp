@@ -215,8 +215,7 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     EmbreeQueryContext ctx;
-    initContext(ctx, &ray, tMin, tMax);
-    ctx.departed = from.object;
+    initContext(ctx, &ray, tMin, tMax, from);
     rtcIntersect1(m_scene.get(), &ctx.rtc, &rayhit);
     const auto hit = decode(rayhit, ctx);
     // A triangle hit on (or within float error of) an edge goes to whichever
@@ -298,8 +297,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Depar
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
     EmbreeQueryContext ctx;
-    initContext(ctx, &ray, tMin, tMax);
-    ctx.departed = from.object;
+    initContext(ctx, &ray, tMin, tMax, from);
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     return r.tfar < 0.0f;
 }
@@ -311,8 +309,7 @@ Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
     if (!toEmbreeRay(ray, tMin, tMax, r)) return Color(1.0);
     TransmittanceAccumulator shadow;
     EmbreeQueryContext ctx;
-    initContext(ctx, &ray, tMin, tMax);
-    ctx.departed = from.object;
+    initContext(ctx, &ray, tMin, tMax, from);
     ctx.shadow = &shadow;
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     // An opaque surface (filtered or not) ended the query; otherwise the
@@ -323,8 +320,8 @@ Color EmbreeAccelerator::transmittance(const Ray& ray, double tMin, double tMax,
 }
 
 void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, double tMin,
-                                    double tMax) const {
-    ctx.init(ray, tMin, tMax);
+                                    double tMax, Departure from) const {
+    ctx.init(ray, tMin, tMax, from.object);
     if (m_filter.active()) ctx.filter = &m_filter;
 }
 
@@ -343,8 +340,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Depar
             return true;
     }
     EmbreeQueryContext ctx;
-    initContext(ctx, &ray, tMin, tMax);
-    ctx.departed = from.object;
+    initContext(ctx, &ray, tMin, tMax, from);
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);
     // A lit point forgets the occluder: its neighbours are likely lit too,
     // and a test of a primitive that does not block is wasted.

@@ -95,7 +95,8 @@ public:
 
     /// \brief Prepares a context for one query of `ray` (may be null) over
     ///   (tMin, tMax), with this accelerator's surface filter.
-    void initContext(EmbreeQueryContext& ctx, const Ray* ray, double tMin, double tMax) const;
+    void initContext(EmbreeQueryContext& ctx, const Ray* ray, double tMin, double tMax,
+                     Departure from = {}) const;
 
 private:
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);

@@ -26,8 +26,7 @@ struct EmbreeReplay::Impl {
         RTCRayHit rayhit;
         if (!accel->toEmbreeRay(r.ray, r.tMin, r.tMax, rayhit.ray)) return;  // a miss
         EmbreeQueryContext ctx;
-        ctx.init(&r.ray, r.tMin, r.tMax);
-        ctx.departed = r.departed;  // the same callback work as the render's query
+        ctx.init(&r.ray, r.tMin, r.tMax, r.departed);  // the render's callback work, departure too
         if (r.occlusion) {
             rtcOccluded1(scene, &ctx.rtc, &rayhit.ray);
             results[i] = rayhit.ray.tfar < 0.0f;

@@ -54,8 +54,10 @@ struct EmbreeQueryContext {
     /// lanes[i]'s; null for single rays.
     EmbreeQueryContext* lanes = nullptr;
 
-    /// Prepares the context for one query of `ray` (may be null) over (tMin, tMax).
-    void init(const Ray* r, double tMinimum, double tMax) {
+    /// Prepares the context for one query of `ray` (may be null) over (tMin,
+    /// tMax) that leaves out object `departedObject` (Departure; none by default).
+    void init(const Ray* r, double tMinimum, double tMax,
+              uint32_t departedObject = 0xffffffffu) {
         rtcInitIntersectContext(&rtc);
         ray = r;
         tMin = tMinimum;
@@ -66,7 +68,7 @@ struct EmbreeQueryContext {
         filter = nullptr;
         shadow = nullptr;
         occluderEntry = 0xffffffffu;
-        departed = 0xffffffffu;
+        departed = departedObject;
         lanes = nullptr;
     }
 };
