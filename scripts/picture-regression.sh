@@ -5,9 +5,10 @@
 # files whose bytes differ are "decoded-same" when every channel and header
 # attribute is (idiff and exrheader, from the optional tools). A case whose
 # bytes differ is rendered once more on both sides: "same-on-rerun" when the
-# second pair is byte-identical (a one-off, not the code: one such pair held a
-# single flipped bit in one deflate match distance that igzip cannot produce
-# from that input, docs/benchmarks.md), else the first pair's verdict stands.
+# second pair is byte-identical, else the first pair's verdict stands. (A
+# binary from before renderer/io/igzip_stream.h wrote another valid deflate
+# stream in ~0.3% of processes: ISA-L 2.30 hashes the stream's address,
+# docs/benchmarks.md, "igzip's output and the stream's address".)
 # A developer's check before landing a change that must not change pictures.
 #
 #   scripts/picture-regression.sh OLD_RAYLAB NEW_RAYLAB [WORKDIR]

@@ -22,6 +22,7 @@
 #include <OpenEXR/ImfStdIO.h>
 
 #include "renderer/huge_array.h"
+#include "renderer/io/igzip_stream.h"
 #include "renderer/thread_arena.h"
 
 namespace raylab {
@@ -51,6 +52,7 @@ struct Deflater {
     unsigned char* raw = nullptr;
     unsigned char* prepassed = nullptr;
     uint8_t* levelBuffer = nullptr;
+    IgzipStream stream;  // placed: igzip's bytes must not depend on its address
     static constexpr size_t kLevelBufferSize = ISAL_DEF_LVL2_DEFAULT;
 
     /// Makes room for blocks of up to `blockBytes` (the first call sizes it).
@@ -72,24 +74,24 @@ struct Deflater {
         if (n < 2 || n > std::numeric_limits<uint32_t>::max()) return 0;
         // Zeroed first: isal_deflate_stateless_init leaves fields that the
         // deflate reads (memcheck showed it), and the bytes must not depend on
-        // whatever the stack held.
-        isal_zstream stream{};
-        isal_deflate_stateless_init(&stream);
-        stream.level = kExrDeflateLevel;
-        stream.level_buf = levelBuffer;
-        stream.level_buf_size = uint32_t(kLevelBufferSize);
-        stream.gzip_flag = IGZIP_ZLIB;  // zlib header and Adler-32, as OpenEXR writes
-        stream.end_of_stream = 1;
-        stream.flush = NO_FLUSH;
-        stream.next_in = const_cast<uint8_t*>(in);
-        stream.avail_in = uint32_t(n);
-        stream.next_out = out;
-        stream.avail_out = uint32_t(n - 1);
-        const int result = isal_deflate_stateless(&stream);
+        // what the last block left.
+        stream.reset();
+        isal_deflate_stateless_init(stream.get());
+        stream->level = kExrDeflateLevel;
+        stream->level_buf = levelBuffer;
+        stream->level_buf_size = uint32_t(kLevelBufferSize);
+        stream->gzip_flag = IGZIP_ZLIB;  // zlib header and Adler-32, as OpenEXR writes
+        stream->end_of_stream = 1;
+        stream->flush = NO_FLUSH;
+        stream->next_in = const_cast<uint8_t*>(in);
+        stream->avail_in = uint32_t(n);
+        stream->next_out = out;
+        stream->avail_out = uint32_t(n - 1);
+        const int result = isal_deflate_stateless(stream.get());
         if (result == STATELESS_OVERFLOW) return 0;
         if (result != COMP_OK)
             throw std::runtime_error("igzip deflate failed (" + std::to_string(result) + ")");
-        return stream.total_out;
+        return stream->total_out;
     }
 };
 

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "renderer/io/igzip_stream.h"
+
 namespace raylab {
 
 namespace {
@@ -72,37 +74,36 @@ class IdatWriter {
 public:
     explicit IdatWriter(std::vector<unsigned char>& png)
         // The level buffer zeroed (make_unique value-initialises): igzip
-        // reads parts of its hash table it has not written, and the same
-        // rows must give the same bytes (a heap block's old contents gave a
-        // different, valid stream now and then).
+        // reads parts of its hash table it has not written.
         : m_png(png), m_levelBuffer(std::make_unique<uint8_t[]>(ISAL_DEF_LVL1_DEFAULT)),
           m_out(kIdatBytes) {
-        isal_deflate_init(&m_stream);
-        m_stream.level = 1;
-        m_stream.level_buf = m_levelBuffer.get();
-        m_stream.level_buf_size = ISAL_DEF_LVL1_DEFAULT;
-        m_stream.gzip_flag = IGZIP_ZLIB;
-        m_stream.flush = NO_FLUSH;
-        m_stream.next_out = m_out.data();
-        m_stream.avail_out = uint32_t(m_out.size());
+        m_stream.reset();
+        isal_deflate_init(m_stream.get());
+        m_stream->level = 1;
+        m_stream->level_buf = m_levelBuffer.get();
+        m_stream->level_buf_size = ISAL_DEF_LVL1_DEFAULT;
+        m_stream->gzip_flag = IGZIP_ZLIB;
+        m_stream->flush = NO_FLUSH;
+        m_stream->next_out = m_out.data();
+        m_stream->avail_out = uint32_t(m_out.size());
     }
 
     /// Deflates in[0, n); `last`: the stream ends with it.
     void write(const unsigned char* in, size_t n, bool last) {
         do {
             const size_t piece = std::min(n, kDeflateInput);
-            m_stream.next_in = const_cast<uint8_t*>(in);
-            m_stream.avail_in = uint32_t(piece);
+            m_stream->next_in = const_cast<uint8_t*>(in);
+            m_stream->avail_in = uint32_t(piece);
             in += piece;
             n -= piece;
-            m_stream.end_of_stream = last && n == 0;
+            m_stream->end_of_stream = last && n == 0;
             // Until igzip has taken the piece (and, at the end, finished the stream).
-            while (m_stream.avail_in > 0 ||
-                   (m_stream.end_of_stream && m_stream.internal_state.state != ZSTATE_END)) {
-                const int result = isal_deflate(&m_stream);
+            while (m_stream->avail_in > 0 ||
+                   (m_stream->end_of_stream && m_stream->internal_state.state != ZSTATE_END)) {
+                const int result = isal_deflate(m_stream.get());
                 if (result != COMP_OK)
                     throw std::runtime_error("igzip deflate failed (" + std::to_string(result) + ")");
-                if (m_stream.avail_out == 0) flush();
+                if (m_stream->avail_out == 0) flush();
             }
         } while (n > 0);
         if (last) flush();
@@ -110,14 +111,14 @@ public:
 
 private:
     void flush() {
-        const size_t used = m_out.size() - m_stream.avail_out;
+        const size_t used = m_out.size() - m_stream->avail_out;
         if (used > 0) putChunk(m_png, "IDAT", m_out.data(), used);
-        m_stream.next_out = m_out.data();
-        m_stream.avail_out = uint32_t(m_out.size());
+        m_stream->next_out = m_out.data();
+        m_stream->avail_out = uint32_t(m_out.size());
     }
 
     std::vector<unsigned char>& m_png;
-    isal_zstream m_stream{};  // zeroed: the init leaves fields the deflate reads
+    IgzipStream m_stream;  // placed: igzip's bytes must not depend on its address
     std::unique_ptr<uint8_t[]> m_levelBuffer;
     std::vector<unsigned char> m_out;
 };
