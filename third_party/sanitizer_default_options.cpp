@@ -9,5 +9,8 @@
 // caught signal 11") and the run fails without any leak. Which runs hit it
 // depends on the heap's layout alone. intercept_tls_get_addr=0 stops that
 // bookkeeping (google/sanitizers#1322); the environment's ASAN_OPTIONS still
-// add to or override it.
-extern "C" const char* __asan_default_options() { return "intercept_tls_get_addr=0"; }
+// add to or override it. Weak: every object of a target that links
+// raylab_warnings carries a copy (the runtime's own default is weak too).
+extern "C" __attribute__((weak)) const char* __asan_default_options() {
+    return "intercept_tls_get_addr=0";
+}
