@@ -68,6 +68,7 @@ __attribute__((target("sse4.2"))) uint64_t bucketBelowSse42(uint64_t x, uint32_t
 }
 #endif
 uint64_t bucketBelow(uint64_t x, uint32_t bucket) {
+    if (x <= 0x101) return 0;  // nothing above 16 MiB below x (and no wrap-around)
 #if defined(__x86_64__)
     if (__builtin_cpu_supports("sse4.2")) return bucketBelowSse42(x, bucket);
 #endif
