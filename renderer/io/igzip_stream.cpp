@@ -2,12 +2,8 @@
 
 #include <sys/mman.h>
 
-#if defined(__x86_64__)
-#include <nmmintrin.h>
-#endif
+#include <isa-l/crc.h>
 
-#include <array>
-#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -21,18 +17,6 @@
 namespace raylab {
 
 namespace {
-
-/// Reflected CRC-32C (Castagnoli) table, a byte at a time.
-constexpr std::array<uint32_t, 256> makeCrc32cTable() {
-    std::array<uint32_t, 256> t{};
-    for (uint32_t i = 0; i < 256; ++i) {
-        uint32_t c = i;
-        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0x82F63B78u & (0u - (c & 1u)));
-        t[i] = c;
-    }
-    return t;
-}
-constexpr std::array<uint32_t, 256> kCrc32c = makeCrc32cTable();
 
 /// Bytes mapped per placed stream.
 constexpr size_t kStreamBytes = (sizeof(isal_zstream) + 4095) & ~size_t(4095);
@@ -52,35 +36,22 @@ Pool& pool() {
 }
 
 /// The largest 64 KiB page number below x (and above 16 MiB) whose bucket
-/// is `bucket`, or 0. One in 2^15 is: tens of thousands of CRCs a search,
-/// one instruction each where the CPU has it (as it must for igzip's code
-/// with the address hash to run at all).
-uint64_t bucketBelowTable(uint64_t x, uint32_t bucket) {
-    while (--x > 0x100)
-        if ((crc32c32(uint32_t(x)) & 0x7FFFu) == bucket) return x;
-    return 0;
-}
-#if defined(__x86_64__)
-__attribute__((target("sse4.2"))) uint64_t bucketBelowSse42(uint64_t x, uint32_t bucket) {
-    while (--x > 0x100)
-        if ((_mm_crc32_u32(0, uint32_t(x)) & 0x7FFFu) == bucket) return x;
-    return 0;
-}
-#endif
+/// is `bucket`, or 0. One in 2^15 is: tens of thousands of CRCs a search.
 uint64_t bucketBelow(uint64_t x, uint32_t bucket) {
     if (x <= 0x101) return 0;  // nothing above 16 MiB below x (and no wrap-around)
-#if defined(__x86_64__)
-    if (__builtin_cpu_supports("sse4.2")) return bucketBelowSse42(x, bucket);
-#endif
-    return bucketBelowTable(x, bucket);
+    while (--x > 0x100)
+        if ((crc32c32(uint32_t(x)) & kIgzipBucketMask) == bucket) return x;
+    return 0;
 }
 
 }  // namespace
 
 uint32_t crc32c32(uint32_t v) {
-    uint32_t c = 0;
-    for (int i = 0; i < 4; ++i) c = kCrc32c[(c ^ (v >> (8 * i))) & 0xFFu] ^ (c >> 8);
-    return c;
+    // ISA-L's iSCSI CRC is CRC-32C without the customary inversions: from
+    // init 0 over v's four bytes, lowest first, it is the crc32 instruction's.
+    unsigned char bytes[4];
+    std::memcpy(bytes, &v, sizeof bytes);
+    return crc32_iscsi(bytes, int(sizeof bytes), 0);
 }
 
 isal_zstream* placeIgzipStream(uint32_t bucket) {

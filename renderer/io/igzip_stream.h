@@ -28,6 +28,8 @@ namespace raylab {
 /// uniform bytes or common half floats: for such inputs the bytes are the
 /// ones igzip wrote most of the time before.
 constexpr uint32_t kIgzipBucket = 3;
+/// The bucket bits that can matter: level 2's table has 2^15 buckets.
+constexpr uint32_t kIgzipBucketMask = 0x7FFF;
 
 /// CRC-32C of the 32-bit value v with initial value 0 and no final xor: what
 /// the crc32 instruction computes from (0, v), igzip's hash.
@@ -36,7 +38,7 @@ uint32_t crc32c32(uint32_t v);
 /// The bucket igzip's first body call uses for a stream at `stream` (low 15
 /// bits; a table of 2^k buckets uses the low k of them).
 inline uint32_t igzipAddressBucket(const void* stream) {
-    return crc32c32(uint32_t(reinterpret_cast<uintptr_t>(stream) >> 16)) & 0x7FFFu;
+    return crc32c32(uint32_t(reinterpret_cast<uintptr_t>(stream) >> 16)) & kIgzipBucketMask;
 }
 
 /// An isal_zstream at an address in bucket kIgzipBucket, taken from the
