@@ -2,7 +2,8 @@
 # tool), a smoke run of scripts/bench-povray.py and the documents' links
 # (scripts/check-doc-links.py); included at the end of tests/CMakeLists.txt.
 # One ctest entry per TestCase class of tests/scripts/test_spd_scripts.py,
-# and docs.links for tests/scripts/test_doc_links.py. The POV-Ray cases report "skipped" (ctest:
+# docs.links for tests/scripts/test_doc_links.py and scripts.BenchBars for
+# tests/scripts/test_bench_bars.py. The POV-Ray cases report "skipped" (ctest:
 # Skipped) when povray, an optional package, is not installed. None of them
 # needs ../shared or the network.
 find_package(Python3 COMPONENTS Interpreter)
@@ -21,6 +22,11 @@ if(Python3_Interpreter_FOUND)
            COMMAND ${Python3_EXECUTABLE} -B -m unittest -v test_doc_links
            WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/scripts)
   set_tests_properties(docs.links PROPERTIES ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
+  # scripts/bench-bars.py's readers of each bar's tool output and its verdicts.
+  add_test(NAME scripts.BenchBars
+           COMMAND ${Python3_EXECUTABLE} -B -m unittest -v test_bench_bars
+           WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/scripts)
+  set_tests_properties(scripts.BenchBars PROPERTIES ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
 else()
   message(WARNING "python3 not found: the tests of scripts/ are not registered (scripts/install-deps.sh installs it)")
 endif()

@@ -1,0 +1,213 @@
+#!/usr/bin/env python3
+"""Issue 20's five performance bars in one run, one summary table.
+
+    scripts/bench-bars.py [--raylab build/bin/raylab] [--before OLD_RAYLAB]
+                          [--bars 1,2,3,4,5] [--repeats 5] [--out FILE.md]
+
+Runs, one after the other, the command each bar is measured with
+(docs/benchmarks.md, section 4) and shows its output as it comes:
+  1. scripts/bench-povray.py --repeats N --nice -20 --raylab-output png
+     (POV-Ray ÷ raylab, whole process, the seven SPD scenes; >= 6x each);
+  2. raylab bench limit balls.nff --spd --runs 5, and scenes/demo.json --runs 3
+     (renderer ÷ bare Embree; balls >= 80%, demo >= 70%);
+  3. scripts/bench-threads.py --repeats 15 --nice -20 -- balls.nff --spd
+     (2 threads ÷ 1, whole process, >= 1.8x; the write <= 15% of the render);
+  4. raylab bench ingest --runs 3 (>= 100 MB/s on all cores, <= 150 bytes/triangle);
+  5. scripts/picture-regression.sh OLD NEW (every picture identical; needs --before).
+Then prints one Markdown table: each bar's figures and whether it holds, with the
+machine, the commit and the load average, to paste into the docs. The SPD scenes
+come from ../shared beside the project. A benchmark, not a test: it exits 0 when
+every tool ran (whether the bars hold or not), 1 when one failed.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import time
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SPD = os.path.join(TOP, "..", "shared", "scenes", "spd")
+
+# The bars as issue 20 states them.
+BAR1_RATIO = 6.0
+BAR2_BALLS, BAR2_DEMO = 80.0, 70.0
+BAR3_SPEEDUP, BAR3_WRITE = 1.8, 15.0
+BAR4_MBS, BAR4_BYTES = 100.0, 150.0
+
+
+def parse_povray(text):
+    """bench-povray.py's table: {scene: (ratio of the medians, per-round median)}."""
+    rows = {}
+    for m in re.finditer(r"^\| (\w+) \| [\d.]+ \| [\d.]+ \| \*\*([\d.]+)×\*\* \| ([\d.]+)× \|", text, re.M):
+        rows[m.group(1)] = (float(m.group(2)), float(m.group(3)))
+    return rows
+
+
+def parse_limit(text):
+    """bench limit: (renderer ÷ bare in %, the run-by-run median in %)."""
+    reach = re.search(r"renderer reaches ([\d.]+)% of bare Embree", text)
+    paired = re.search(r"run by run \(each render against its own replays\): median ([\d.]+)%", text)
+    if not reach:
+        return None
+    return float(reach.group(1)), float(paired.group(1)) if paired else None
+
+
+def parse_threads(text):
+    """bench-threads.py: (wall speed-up of the last thread count, per-round median,
+    write ÷ render at that count in %), for the first binary."""
+    rows = re.findall(r"^\| \S+ \| (\d+) \| [\d.]+ \| [\d.]+ \| [\d.]+ \| [\d.]+ \| ([\d.]+)× \| (\d+)% \|",
+                      text, re.M)
+    per_round = re.search(r"wall speed-up round by round: median ([\d.]+)×", text)
+    if not rows:
+        return None
+    last = max(rows, key=lambda r: int(r[0]))
+    return float(last[1]), float(per_round.group(1)) if per_round else None, float(last[2])
+
+
+def parse_ingest(text):
+    """bench ingest: (MB/s, bytes per triangle) of the whole load with the most threads."""
+    rows = re.findall(r"^(\d+)\s+loadObj \(whole\)\s+[\d.]+\s+([\d.]+)\s+[\d.]+\s+[\d.]+\s+([\d.]+)\s*$",
+                      text, re.M)
+    if not rows:
+        return None
+    best = max(rows, key=lambda r: int(r[0]))
+    return float(best[1]), float(best[2])
+
+
+def parse_regression(text):
+    """picture-regression.sh: (cases whose RGBA is identical, all cases)."""
+    cases = re.findall(r"^(\S+)\s+(identical|DIFFERENT)\s+\S+", text, re.M)
+    return sum(1 for _, v in cases if v == "identical"), len(cases)
+
+
+def verdicts(results):
+    """Table rows (bar, measured, holds) from the parsed results of the bars run."""
+    rows = []
+    if "1" in results:
+        r = results["1"]
+        if r:
+            worst = min(r, key=lambda s: r[s][0])
+            text = ", ".join(f"{s} {v[0]:.1f}× ({v[1]:.1f}×)" for s, v in r.items())
+            rows.append(("1: POV-Ray ÷ raylab ≥ 6× (per round in brackets)", text,
+                         "yes" if r[worst][0] >= BAR1_RATIO else f"no: {worst} {r[worst][0]:.1f}×"))
+        else:
+            rows.append(("1", "no result", "?"))
+    if "2" in results:
+        balls, demo = results["2"]
+        text = (f"balls `--spd` {balls[0]:.1f}% (run by run {balls[1]:.1f}%), "
+                f"demo {demo[0]:.1f}% (run by run {demo[1]:.1f}%)") if balls and demo else "no result"
+        holds = "yes" if balls and demo and balls[0] >= BAR2_BALLS and demo[0] >= BAR2_DEMO else "no"
+        rows.append(("2: renderer ÷ bare Embree (balls ≥ 80%, demo ≥ 70%)", text, holds))
+    if "3" in results:
+        r = results["3"]
+        text = f"{r[0]:.2f}× (per round {r[1]:.2f}×), write ÷ render {r[2]:.0f}%" if r else "no result"
+        holds = "yes" if r and r[0] >= BAR3_SPEEDUP and r[2] <= BAR3_WRITE else "no"
+        rows.append(("3: 2 threads ÷ 1 ≥ 1.8×, write ≤ 15% of render", text, holds))
+    if "4" in results:
+        r = results["4"]
+        text = f"{r[0]:.1f} MB/s, {r[1]:.1f} bytes/triangle" if r else "no result"
+        holds = "yes" if r and r[0] >= BAR4_MBS and r[1] <= BAR4_BYTES else "no"
+        rows.append(("4: OBJ ingest ≥ 100 MB/s, ≤ 150 bytes/triangle", text, holds))
+    if "5" in results:
+        same, total = results["5"]
+        rows.append(("5: pictures bit-identical", f"{same} of {total} identical",
+                     "yes" if total > 0 and same == total else "no"))
+    return rows
+
+
+def run(cmd, log):
+    """Runs cmd with its output shown as it comes; returns (exit code, output)."""
+    print("$ " + " ".join(cmd), flush=True)
+    log.append("$ " + " ".join(cmd))
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=TOP)
+    out = []
+    for line in proc.stdout:
+        sys.stdout.write(line)
+        out.append(line)
+    proc.wait()
+    sys.stdout.flush()
+    return proc.returncode, "".join(out)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--raylab", default=os.path.join(TOP, "build", "bin", "raylab"))
+    ap.add_argument("--before", metavar="OLD_RAYLAB", help="the binary bar 5 compares pictures with")
+    ap.add_argument("--bars", default="1,2,3,4,5", help="which bars (default all; 5 needs --before)")
+    ap.add_argument("--repeats", type=int, default=5, help="bar 1's rounds (default 5)")
+    ap.add_argument("--out", metavar="FILE.md", help="also write the summary table here")
+    args = ap.parse_args()
+    bars = [b.strip() for b in args.bars.split(",") if b.strip()]
+    if any(b not in "12345" or len(b) != 1 for b in bars):
+        ap.error("--bars: a comma-separated list of 1..5")
+    if "5" in bars and not args.before:
+        ap.error("bar 5 needs --before OLD_RAYLAB (or leave it out of --bars)")
+    raylab = os.path.abspath(args.raylab)
+    if not os.access(raylab, os.X_OK):
+        ap.error(f"--raylab {args.raylab}: not an executable")
+    if any(b in bars for b in "123") and not os.path.isdir(SPD):
+        ap.error(f"bars 1-3 need the SPD scenes in {os.path.normpath(SPD)}")
+
+    start = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    load = os.getloadavg()[0]
+    results, log, failed = {}, [], []
+    nice = ["nice", "-n", "-20"] if os.geteuid() == 0 else []
+    if "1" in bars:
+        rc, out = run([sys.executable, "scripts/bench-povray.py", "--repeats", str(args.repeats), "--nice",
+                       "-20", "--raylab", raylab, "--raylab-output", "png"], log)
+        results["1"] = parse_povray(out)
+        if rc != 0:
+            failed.append("1")
+    if "2" in bars:
+        rc1, balls = run(nice + [raylab, "bench", "limit", os.path.join(SPD, "balls.nff"), "--spd",
+                                 "--runs", "5"], log)
+        rc2, demo = run(nice + [raylab, "bench", "limit", "scenes/demo.json", "--runs", "3"], log)
+        results["2"] = (parse_limit(balls), parse_limit(demo))
+        if rc1 != 0 or rc2 != 0:
+            failed.append("2")
+    if "3" in bars:
+        rc, out = run([sys.executable, "scripts/bench-threads.py", "--repeats", "15", "--nice", "-20",
+                       "--raylab", raylab, "--", os.path.join(SPD, "balls.nff"), "--spd"], log)
+        results["3"] = parse_threads(out)
+        if rc != 0:
+            failed.append("3")
+    if "4" in bars:
+        rc, out = run(nice + [raylab, "bench", "ingest", "--runs", "3"], log)
+        results["4"] = parse_ingest(out)
+        if rc != 0:
+            failed.append("4")
+    if "5" in bars:
+        rc, out = run(["scripts/picture-regression.sh", os.path.abspath(args.before), raylab], log)
+        results["5"] = parse_regression(out)
+        # Exit 1 is the script's verdict (a picture differs), not a failure to run.
+        if rc not in (0, 1):
+            failed.append("5")
+
+    commit = subprocess.run(["git", "-C", TOP, "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip() or "?"
+    cpu = "?"
+    try:
+        with open("/proc/cpuinfo") as fh:
+            cpu = next(l.split(":", 1)[1].strip() for l in fh if l.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    table = [f"Issue 20's bars, {start} to {time.strftime('%H:%M UTC', time.gmtime())}; {cpu}, "
+             f"{os.cpu_count()} logical cores, load average {load:.2f} at the start; `{os.path.relpath(raylab, TOP)}` "
+             f"(main {commit}); `scripts/bench-bars.py --bars {','.join(bars)}`", "",
+             "| bar | measured | holds? |", "|---|---|---|"]
+    table += [f"| {b} | {m} | {h} |" for b, m, h in verdicts(results)]
+    print("\n" + "\n".join(table))
+    if args.out:
+        with open(args.out, "w") as fh:
+            fh.write("\n".join(table) + "\n")
+    if failed:
+        print(f"bench-bars: error: the command of bar {', '.join(failed)} failed (its output is above)",
+              file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
