@@ -152,10 +152,9 @@ def read_json(path):
         return {}
 
 
-def run(cmd, log):
+def run(cmd):
     """Runs cmd with its output shown as it comes; returns (exit code, output)."""
     print("$ " + " ".join(cmd), flush=True)
-    log.append("$ " + " ".join(cmd))
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=TOP)
     out = []
     for line in proc.stdout:
@@ -187,13 +186,13 @@ def main():
 
     start = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     load = os.getloadavg()[0]
-    results, log, failed = {}, [], []
+    results, failed = {}, []
     nice = ["nice", "-n", "-20"] if os.geteuid() == 0 else []
     work = tempfile.mkdtemp(prefix="bench-bars.")
     if "1" in bars:
         report = os.path.join(work, "povray.json")
         rc, _ = run([sys.executable, "scripts/bench-povray.py", "--repeats", str(args.repeats), "--nice",
-                     "-20", "--raylab", raylab, "--raylab-output", "png", "--json", report], log)
+                     "-20", "--raylab", raylab, "--raylab-output", "png", "--json", report])
         results["1"] = parse_povray(read_json(report))
         if rc != 0:
             failed.append("1")
@@ -202,24 +201,24 @@ def main():
         for scene, flags in ((os.path.join(SPD, "balls.nff"), ["--spd", "--runs", "5"]),
                              ("scenes/demo.json", ["--runs", "3"])):
             report = os.path.join(work, os.path.basename(scene) + ".limit.json")
-            rc, _ = run(nice + [raylab, "bench", "limit", scene] + flags + ["--out", report], log)
+            rc, _ = run(nice + [raylab, "bench", "limit", scene] + flags + ["--out", report])
             limits.append(parse_limit(read_json(report)))
             if rc != 0 and "2" not in failed:
                 failed.append("2")
         results["2"] = tuple(limits)
     if "3" in bars:
         rc, out = run([sys.executable, "scripts/bench-threads.py", "--repeats", "15", "--nice", "-20",
-                       "--raylab", raylab, "--", os.path.join(SPD, "balls.nff"), "--spd"], log)
+                       "--raylab", raylab, "--", os.path.join(SPD, "balls.nff"), "--spd"])
         results["3"] = parse_threads(out)
         if rc != 0:
             failed.append("3")
     if "4" in bars:
-        rc, out = run(nice + [raylab, "bench", "ingest", "--runs", "3"], log)
+        rc, out = run(nice + [raylab, "bench", "ingest", "--runs", "3"])
         results["4"] = parse_ingest(out)
         if rc != 0:
             failed.append("4")
     if "5" in bars:
-        rc, out = run(["scripts/picture-regression.sh", os.path.abspath(args.before), raylab], log)
+        rc, out = run(["scripts/picture-regression.sh", os.path.abspath(args.before), raylab])
         results["5"] = parse_regression(out)
         # Exit 1 is the script's verdict (a picture differs), not a failure to run.
         if rc not in (0, 1):
