@@ -24,6 +24,7 @@ every tool ran (whether the bars hold or not), 1 when one failed.
 """
 
 import argparse
+import importlib.util
 import json
 import os
 import re
@@ -33,8 +34,15 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SPD = os.path.join(TOP, "..", "shared", "scenes", "spd")
+
+# bench-povray.py's machine description (the CPU's name, the commit with a
+# mark for local changes), the same in both tables.
+_spec = importlib.util.spec_from_file_location("bench_povray", os.path.join(TOP, "scripts", "bench-povray.py"))
+bench_povray = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(bench_povray)
 
 # The bars as issue 20 states them.
 BAR1_RATIO = 6.0
@@ -225,14 +233,7 @@ def main():
             failed.append("5")
 
     shutil.rmtree(work, ignore_errors=True)
-    commit = subprocess.run(["git", "-C", TOP, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip() or "?"
-    cpu = "?"
-    try:
-        with open("/proc/cpuinfo") as fh:
-            cpu = next(l.split(":", 1)[1].strip() for l in fh if l.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
+    commit, cpu = bench_povray.git_commit(), bench_povray.cpu_model()
     table = [f"Issue 20's bars, {start} to {time.strftime('%H:%M UTC', time.gmtime())}; {cpu}, "
              f"{os.cpu_count()} logical cores, load average {load:.2f} at the start; `{os.path.relpath(raylab, TOP)}` "
              f"(main {commit}); `scripts/bench-bars.py --bars {','.join(bars)}`", "",
