@@ -42,16 +42,14 @@ def slug(heading):
     return "".join(out).replace(" ", "-")
 
 
-def strip_code(lines):
-    """The lines with fenced code blocks blanked and inline code removed,
-    numbered from 1."""
+def outside_fences(lines):
+    """(line number from 1, line) of every line outside fenced code blocks."""
     fenced = False
     for number, line in enumerate(lines, 1):
         if line.lstrip().startswith("```"):
             fenced = not fenced
-            yield number, ""
-            continue
-        yield number, "" if fenced else re.sub(r"`[^`]*`", "", line)
+        elif not fenced:
+            yield number, line
 
 
 _anchor_cache = {}
@@ -65,13 +63,7 @@ def anchors(path):
         found = set()
         with open(path, encoding="utf-8") as f:
             lines = f.read().split("\n")
-        fenced = False
-        for line in lines:
-            if line.lstrip().startswith("```"):
-                fenced = not fenced
-                continue
-            if fenced:
-                continue
+        for _, line in outside_fences(lines):
             found.update(HTML_ANCHOR.findall(line))
             m = HEADING.match(line)
             if not m:
@@ -90,8 +82,8 @@ def check(path):
     with open(path, encoding="utf-8") as f:
         lines = f.read().split("\n")
     here = os.path.dirname(path)
-    for number, line in strip_code(lines):
-        for target in LINK.findall(line):
+    for number, line in outside_fences(lines):
+        for target in LINK.findall(re.sub(r"`[^`]*`", "", line)):  # inline code holds no links
             if re.match(r"^[a-z][a-z0-9+.-]*:", target, re.I):  # http:, https:, mailto:
                 continue
             file_part, _, fragment = target.partition("#")
