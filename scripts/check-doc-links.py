@@ -4,7 +4,9 @@
 Every link [text](target) whose target is not a URL must name a file or folder
 that exists (relative to the document), and a #fragment must name a heading of
 the target document, spelled as GitHub spells heading anchors. Links inside
-code (fenced blocks and `inline code`) are not links and are skipped.
+code (fenced blocks and `inline code`) are not links and are skipped, and so
+are links out of the repository (../shared beside it): whether those exist
+depends on where the clone sits, not on the documents.
 
   scripts/check-doc-links.py [FILE.md ...]   # default: README.md and docs/*.md
 
@@ -76,8 +78,9 @@ def anchors(path):
     return _anchor_cache[path]
 
 
-def check(path):
-    """The broken links of one document, as messages."""
+def check(path, root=TOP):
+    """The broken links of one document, as messages; targets outside the
+    folder `root` are not checked."""
     problems = []
     with open(path, encoding="utf-8") as f:
         lines = f.read().split("\n")
@@ -88,6 +91,8 @@ def check(path):
                 continue
             file_part, _, fragment = target.partition("#")
             target_path = os.path.normpath(os.path.join(here, file_part)) if file_part else path
+            if os.path.commonpath([target_path, root]) != root:
+                continue
             where = f"{os.path.relpath(path, TOP)}:{number}"
             if not os.path.exists(target_path):
                 problems.append(f"{where}: link to a missing file: {target}")
@@ -99,7 +104,7 @@ def check(path):
     return problems
 
 
-def main(argv):
+def main(argv, root=TOP):
     files = argv[1:] or [os.path.join(TOP, "README.md")] + sorted(
         glob.glob(os.path.join(TOP, "docs", "*.md")))
     problems = []
@@ -107,7 +112,7 @@ def main(argv):
         if not os.path.isfile(path):
             print(f"check-doc-links: error: {path}: no such file", file=sys.stderr)
             return 2
-        problems += check(os.path.abspath(path))
+        problems += check(os.path.abspath(path), root)
     for p in problems:
         print(p)
     return 1 if problems else 0
