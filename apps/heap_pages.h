@@ -1,5 +1,6 @@
 #pragma once
-// The main thread's malloc heap on transparent huge pages.
+// The malloc heaps of the main thread and of TBB's workers on transparent
+// huge pages.
 //
 // Why: on this project's VMs a 4 KiB page fault costs ~10-13 us and the
 // faults of one process are serial (docs/benchmarks.md, bar 3). glibc serves
@@ -10,11 +11,39 @@
 // blocks come from the heap instead, freed memory stays there for the next
 // one, and the heap's first 64 MiB are advised as huge pages: one fault per
 // 2 MiB.
+//
+// A heap's head, below its first 2 MiB boundary, would stay on small pages
+// (a 2 MiB page needs its whole aligned range untouched when it is first
+// touched): it is reserved by a block that is never touched, so allocations
+// start on the boundary. A TBB worker's allocations come from an arena of its
+// own, which glibc grows a page at a time; WorkerHeapsOnHugePages grows it
+// once, advises it and reserves its head the same way (gears' polygons are
+// built on a worker). Together: gears' page faults 1,700-1,860 -> ~560 a
+// process, balls' (EXR) 1,430-1,710 -> ~600 (docs/benchmarks.md).
+
+#include <memory>
 
 namespace raylab {
 
 /// Once, at the start of main (before any thread exists). Only advice and
 /// malloc tuning: if the heap cannot grow (ulimit -v), nothing changes.
 void useHugePageHeap();
+
+/// While one lives, every TBB worker that joins the calling thread's arena
+/// puts its malloc arena on huge pages the first time (address space only:
+/// the memory is touched, and counted, as it is used). Made by the commands
+/// that render rather than in main, so that commands without TBB (--help,
+/// --version) do not start its scheduler.
+class WorkerHeapsOnHugePages {
+public:
+    WorkerHeapsOnHugePages();
+    ~WorkerHeapsOnHugePages();
+    WorkerHeapsOnHugePages(const WorkerHeapsOnHugePages&) = delete;
+    WorkerHeapsOnHugePages& operator=(const WorkerHeapsOnHugePages&) = delete;
+
+private:
+    struct Observer;
+    std::unique_ptr<Observer> m_observer;
+};
 
 }  // namespace raylab

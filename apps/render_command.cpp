@@ -26,6 +26,7 @@
 #include "apps/arg_parser.h"
 #include "apps/commands.h"
 #include "apps/exit_keep.h"
+#include "apps/heap_pages.h"
 #include "apps/progress_bar.h"
 #include "apps/run_phase.h"
 #include "apps/signals.h"
@@ -454,6 +455,9 @@ int renderCommand(const std::vector<std::string>& args) {
     if (cli.overrides.threads && !mpi.active())
         threadLimit = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, size_t(*cli.overrides.threads));
+    // TBB's workers allocate from malloc arenas of their own: on huge pages
+    // too, as the main thread's heap (apps/heap_pages.h).
+    const WorkerHeapsOnHugePages workerHeaps;
 
     auto t0 = Clock::now();
     const InputFileLog inputs;  // every file read from here on (input_files.h)

@@ -5,6 +5,9 @@
 #include <isa-l/crc.h>
 
 #include <cstring>
+#if defined(__x86_64__)
+#include <nmmintrin.h>
+#endif
 #include <memory>
 #include <mutex>
 #include <new>
@@ -46,7 +49,25 @@ uint64_t bucketBelow(uint64_t x, uint32_t bucket) {
 
 }  // namespace
 
+namespace {
+
+#if defined(__x86_64__)
+/// SSE4.2's crc32 instruction, which igzip's hash itself uses.
+__attribute__((target("sse4.2"))) uint32_t crc32cInstruction(uint32_t v) {
+    return _mm_crc32_u32(0, v);
+}
+#endif
+
+}  // namespace
+
 uint32_t crc32c32(uint32_t v) {
+#if defined(__x86_64__)
+    // A placement searches tens of thousands of addresses: the instruction
+    // inline (~1 ns) rather than a library call over a 4-byte buffer (~20 ns,
+    // 0.7 ms per placement).
+    static const bool instruction = __builtin_cpu_supports("sse4.2");
+    if (instruction) return crc32cInstruction(v);
+#endif
     // ISA-L's iSCSI CRC is CRC-32C without the customary inversions: from
     // init 0 over v's four bytes, lowest first, it is the crc32 instruction's.
     unsigned char bytes[4];

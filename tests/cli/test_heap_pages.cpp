@@ -1,14 +1,23 @@
 // useHugePageHeap (apps/heap_pages.h): after it, the main thread's heap has a
 // huge-page-advised stretch of at least 60 MiB, and a 1 MiB block comes from
-// the heap (not a fresh mapping) and lands in that stretch. Under a sanitizer
-// malloc is not glibc's and the call changes nothing: the test says so.
+// the heap (not a fresh mapping) and lies in that stretch from its first
+// pages on (the heap's head is reserved). WorkerHeapsOnHugePages: a TBB
+// worker's blocks lie in an advised stretch of its own arena while one lives,
+// and not without. Under a sanitizer malloc is not glibc's and the calls
+// change nothing: the tests say so.
 
 #include <doctest/doctest.h>
 
 #include <unistd.h>
 
+#include <tbb/task_group.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
+#include <thread>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -80,5 +89,69 @@ TEST_CASE("heap pages: the heap grows by an advised stretch that serves megabyte
     const uintptr_t middle = (before + after) / 2;
     CHECK(advisedMappingOf(middle, range));
     CHECK(range.end - range.begin >= (size_t(60) << 20));
+    // The block's first pages too: allocations start above the heap's head
+    // (which stays on small pages), 4 KiB below a 2 MiB boundary at most.
+    Range first;
+    CHECK(advisedMappingOf(at + 4096, first));
+    CHECK(first.begin == range.begin);
     std::free(static_cast<void*>(block));
+}
+
+namespace {
+
+/// Where a 1 MiB block that a TBB worker allocates lies: whether its page
+/// 8 KiB in belongs to a huge-page-advised mapping. Two tasks wait for each
+/// other, so one of them runs on a worker; false in `ran` if no worker came
+/// within ten seconds.
+bool workerBlockAdvised(bool& ran) {
+    std::atomic<int> started{0};
+    std::atomic<bool> advised{false}, measured{false};
+    const auto mainThread = std::this_thread::get_id();
+    const auto task = [&] {
+        started.fetch_add(1);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (started.load() < 2 && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::yield();
+        if (std::this_thread::get_id() == mainThread || started.load() < 2) return;
+        void* volatile block = std::malloc(size_t(1) << 20);
+        Range range;
+        advised = advisedMappingOf(reinterpret_cast<uintptr_t>(static_cast<void*>(block)) + 8192, range);
+        measured = true;
+        std::free(static_cast<void*>(block));
+    };
+    tbb::task_group group;
+    group.run(task);
+    group.run(task);
+    group.wait();
+    ran = measured;
+    return advised;
+}
+
+}  // namespace
+
+TEST_CASE("heap pages: TBB workers allocate from advised arenas while WorkerHeapsOnHugePages lives") {
+    if (!kGlibcMalloc) {
+        MESSAGE("sanitizer build: malloc is not glibc's, nothing to check");
+        return;
+    }
+    if (tbb::this_task_arena::max_concurrency() < 2) {
+        MESSAGE("one hardware thread: no TBB worker to look at");
+        return;
+    }
+    useHugePageHeap();
+    const WorkerHeapsOnHugePages workers;
+    bool ran = false;
+    const bool advised = workerBlockAdvised(ran);
+    REQUIRE(ran);
+    CHECK(advised);
+}
+
+TEST_CASE("heap pages: without WorkerHeapsOnHugePages a TBB worker's arena is not advised") {
+    // The control for the test above: the advice comes from the observer.
+    if (!kGlibcMalloc || tbb::this_task_arena::max_concurrency() < 2) return;
+    useHugePageHeap();
+    bool ran = false;
+    const bool advised = workerBlockAdvised(ran);
+    REQUIRE(ran);
+    CHECK_FALSE(advised);
 }
