@@ -102,10 +102,12 @@ void useHugePageHeap() {
     adviseHuge(first, reinterpret_cast<uintptr_t>(sbrk(0)));
 }
 
+namespace {
+
 /// Each worker's first entry into the observed arena grows its malloc arena
 /// (16 MiB of address space: gears' worker uses ~3 MB; beyond it the arena
 /// grows by small pages as before).
-struct WorkerHeapsOnHugePages::Observer : tbb::task_scheduler_observer {
+struct WorkerArenaObserver : tbb::task_scheduler_observer {
     void on_scheduler_entry(bool worker) override {
         thread_local bool done = false;
         if (!worker || done) return;
@@ -114,23 +116,30 @@ struct WorkerHeapsOnHugePages::Observer : tbb::task_scheduler_observer {
     }
 };
 
-WorkerHeapsOnHugePages::WorkerHeapsOnHugePages() {
-    // observe(true) starts TBB's scheduler, which can fail for memory (under
-    // ulimit -v). oneTBB then leaves the observer half registered, and
-    // destroying it crashes: it is left alive instead, unobserved, and the
-    // render reports the shortage where it first needs TBB.
-    auto* observer = new (std::nothrow) Observer;
+/// Never destroyed: observing stops with the process. (observe(false) leaves
+/// oneTBB's record of the observer to be freed by threads that may not run
+/// again, a leak at exit; and after a failed observe(true), destroying the
+/// observer crashes.)
+std::atomic<WorkerArenaObserver*> g_workerObserver{nullptr};
+
+}  // namespace
+
+void useHugePageWorkerHeaps() {
+    if (g_workerObserver.load()) return;
+    auto* observer = new (std::nothrow) WorkerArenaObserver;
     if (!observer) return;
+    WorkerArenaObserver* none = nullptr;
+    if (!g_workerObserver.compare_exchange_strong(none, observer)) {
+        delete observer;  // another thread was first
+        return;
+    }
+    // observe(true) starts TBB's scheduler, which can fail for memory (under
+    // ulimit -v): the render then reports the shortage where it first needs
+    // TBB.
     try {
         observer->observe(true);
     } catch (const std::exception&) {
-        return;  // `observer` leaks on purpose (a few bytes)
     }
-    m_observer.reset(observer);
-}
-
-WorkerHeapsOnHugePages::~WorkerHeapsOnHugePages() {
-    if (m_observer) m_observer->observe(false);
 }
 
 }  // namespace raylab

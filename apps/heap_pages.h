@@ -16,12 +16,10 @@
 // (a 2 MiB page needs its whole aligned range untouched when it is first
 // touched): it is reserved by a block that is never touched, so allocations
 // start on the boundary. A TBB worker's allocations come from an arena of its
-// own, which glibc grows a page at a time; WorkerHeapsOnHugePages grows it
+// own, which glibc grows a page at a time; useHugePageWorkerHeaps grows it
 // once, advises it and reserves its head the same way (gears' polygons are
 // built on a worker). Together: gears' page faults 1,700-1,860 -> ~560 a
 // process, balls' (EXR) 1,430-1,710 -> ~600 (docs/benchmarks.md).
-
-#include <memory>
 
 namespace raylab {
 
@@ -29,21 +27,12 @@ namespace raylab {
 /// malloc tuning: if the heap cannot grow (ulimit -v), nothing changes.
 void useHugePageHeap();
 
-/// While one lives, every TBB worker that joins the calling thread's arena
-/// puts its malloc arena on huge pages the first time (address space only:
-/// the memory is touched, and counted, as it is used). Made by the commands
-/// that render rather than in main, so that commands without TBB (--help,
-/// --version) do not start its scheduler.
-class WorkerHeapsOnHugePages {
-public:
-    WorkerHeapsOnHugePages();
-    ~WorkerHeapsOnHugePages();
-    WorkerHeapsOnHugePages(const WorkerHeapsOnHugePages&) = delete;
-    WorkerHeapsOnHugePages& operator=(const WorkerHeapsOnHugePages&) = delete;
-
-private:
-    struct Observer;
-    std::unique_ptr<Observer> m_observer;
-};
+/// From the first call on, for the rest of the process, every TBB worker
+/// that joins the calling thread's arena puts its malloc arena on huge pages
+/// when it first enters (address space only: the memory is touched, and
+/// counted, as it is used). Called by the commands that render rather than
+/// in main, so that commands without TBB (--help, --version) do not start its
+/// scheduler. Idempotent.
+void useHugePageWorkerHeaps();
 
 }  // namespace raylab

@@ -457,7 +457,7 @@ int renderCommand(const std::vector<std::string>& args) {
             tbb::global_control::max_allowed_parallelism, size_t(*cli.overrides.threads));
     // TBB's workers allocate from malloc arenas of their own: on huge pages
     // too, as the main thread's heap (apps/heap_pages.h).
-    const WorkerHeapsOnHugePages workerHeaps;
+    useHugePageWorkerHeaps();
 
     auto t0 = Clock::now();
     const InputFileLog inputs;  // every file read from here on (input_files.h)

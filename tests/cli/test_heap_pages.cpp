@@ -1,9 +1,9 @@
 // useHugePageHeap (apps/heap_pages.h): after it, the main thread's heap has a
 // huge-page-advised stretch of at least 60 MiB, and a 1 MiB block comes from
 // the heap (not a fresh mapping) and lies in that stretch from its first
-// pages on (the heap's head is reserved). WorkerHeapsOnHugePages: a TBB
-// worker's blocks lie in an advised stretch of its own arena while one lives,
-// and not without. Under a sanitizer malloc is not glibc's and the calls
+// pages on (the heap's head is reserved). useHugePageWorkerHeaps: a TBB
+// worker's blocks lie in an advised stretch of its own arena after it, and
+// not without it. Under a sanitizer malloc is not glibc's and the calls
 // change nothing: the tests say so.
 
 #include <doctest/doctest.h>
@@ -129,7 +129,7 @@ bool workerBlockAdvised(bool& ran) {
 
 }  // namespace
 
-TEST_CASE("heap pages: TBB workers allocate from advised arenas while WorkerHeapsOnHugePages lives") {
+TEST_CASE("heap pages: TBB workers allocate from advised arenas after useHugePageWorkerHeaps") {
     if (!kGlibcMalloc) {
         MESSAGE("sanitizer build: malloc is not glibc's, nothing to check");
         return;
@@ -139,14 +139,14 @@ TEST_CASE("heap pages: TBB workers allocate from advised arenas while WorkerHeap
         return;
     }
     useHugePageHeap();
-    const WorkerHeapsOnHugePages workers;
+    useHugePageWorkerHeaps();
     bool ran = false;
     const bool advised = workerBlockAdvised(ran);
     REQUIRE(ran);
     CHECK(advised);
 }
 
-TEST_CASE("heap pages: without WorkerHeapsOnHugePages a TBB worker's arena is not advised") {
+TEST_CASE("heap pages: without useHugePageWorkerHeaps a TBB worker's arena is not advised") {
     // The control for the test above: the advice comes from the observer.
     if (!kGlibcMalloc || tbb::this_task_arena::max_concurrency() < 2) return;
     useHugePageHeap();
