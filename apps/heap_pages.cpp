@@ -1,7 +1,6 @@
 #include "apps/heap_pages.h"
 
 #include <malloc.h>
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include <tbb/task_scheduler_observer.h>
@@ -12,6 +11,8 @@
 #include <cstdlib>
 #include <exception>
 #include <new>
+
+#include "renderer/huge_pages.h"
 
 namespace raylab {
 
@@ -50,10 +51,10 @@ bool reserveUpTo(uintptr_t from, uintptr_t to) {
     return true;
 }
 
+/// The whole 2 MiB pages of [first, end) advised (adviseHugePages: regions
+/// of 4 MiB and more; the heaps here are 16 and 64 MiB).
 void adviseHuge(uintptr_t first, uintptr_t end) {
-    const uintptr_t last = end & ~(kHuge - 1);
-    if (last > first)
-        (void)madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice only
+    if (end > first) adviseHugePages(reinterpret_cast<const void*>(first), end - first);
 }
 
 /// Grows the calling thread's (non-main) arena by `bytes`, advises it and

@@ -5,13 +5,14 @@
 #include <isa-l/crc.h>
 
 #include <cstring>
-#if defined(__x86_64__)
-#include <nmmintrin.h>
-#endif
 #include <memory>
 #include <mutex>
 #include <new>
 #include <vector>
+
+#if defined(__x86_64__)
+#include <nmmintrin.h>
+#endif
 
 #ifndef MAP_FIXED_NOREPLACE
 #define MAP_FIXED_NOREPLACE 0x100000  // Linux 4.17; older kernels take it as a hint
@@ -46,10 +47,6 @@ uint64_t bucketBelow(uint64_t x, uint32_t bucket) {
         if ((crc32c32(uint32_t(x)) & kIgzipBucketMask) == bucket) return x;
     return 0;
 }
-
-}  // namespace
-
-namespace {
 
 #if defined(__x86_64__)
 /// SSE4.2's crc32 instruction, which igzip's hash itself uses.
