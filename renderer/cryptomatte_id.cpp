@@ -2,7 +2,7 @@
 
 #include <cstring>
 #include <string_view>
-#include <unordered_set>
+#include <vector>
 
 #include "renderer/io/json_string.h"
 
@@ -83,22 +83,35 @@ std::string cryptomatteLayerKey(const std::string& layerName) {
 
 std::string cryptomatteManifest(const std::vector<std::string>& names) {
     // Thousands of names per frame (one per SPD primitive): sized once and
-    // appended in place, names seen kept as views, so that building it costs
-    // no reallocation and no copy of a name (balls.nff: 5 -> ~1 ms).
+    // appended in place, with no string made per name; names seen are found
+    // in an open-addressing table keyed by the name's id, which is computed
+    // for the manifest anyway (a std::unordered_set allocated a node and
+    // hashed every name again: balls.nff's manifest 8.5 -> ~4 M instructions).
     size_t bytes = 2;
     for (const std::string& name : names) bytes += name.size() + 16;  // "name":"8hex",
     std::string json;
     json.reserve(bytes);
     json += '{';
-    std::unordered_set<std::string_view> seen;
-    seen.reserve(names.size());
+    size_t slots = 16;
+    while (slots < 2 * names.size()) slots *= 2;
+    std::vector<const std::string*> seen(slots, nullptr);
+    static const char digits[] = "0123456789abcdef";
     for (const std::string& name : names) {
-        if (!seen.insert(name).second) continue;
+        const uint32_t bits = cryptomatteIdBits(name);
+        size_t slot = size_t(bits) & (slots - 1);
+        bool repeated = false;
+        for (; seen[slot]; slot = (slot + 1) & (slots - 1))
+            if (*seen[slot] == name) {
+                repeated = true;
+                break;
+            }
+        if (repeated) continue;
+        seen[slot] = &name;
         if (json.size() > 1) json += ',';
-        json += jsonString(name);
-        json += ":\"";
-        json += cryptomatteHex(cryptomatteIdBits(name));
-        json += '"';
+        appendJsonString(json, name);
+        char hex[11] = {':', '"', 0, 0, 0, 0, 0, 0, 0, 0, '"'};
+        for (int i = 9, b = 0; b < 8; --i, ++b) hex[i] = digits[(bits >> (4 * b)) & 15u];
+        json.append(hex, sizeof hex);
     }
     json += '}';
     return json;

@@ -69,21 +69,54 @@ struct MatteExtent {
     int maxObject = -1;
 };
 
-MatteExtent matteExtent(const Film& film) {
+/// matteExtent over pixels [begin, end) with the rank count a compile-time
+/// constant: the loops unroll into branch-free counts and maxima (the
+/// general loop took 14 instructions an entry, 14.4 M on balls --spd).
+template <size_t Ranks>
+MatteExtent matteExtentOf(const MatteEntry* entries, size_t begin, size_t end, MatteExtent e) {
+    for (size_t i = begin; i != end; ++i) {
+        const MatteEntry* m = entries + i * Ranks;
+        int used = 0;
+        for (size_t k = 0; k < Ranks; ++k) {
+            used += int(m[k].object >= 0) & int(m[k].coverage > 0);
+            e.maxObject = std::max(e.maxObject, int(m[k].object));
+        }
+        e.usedRanks = std::max(e.usedRanks, used);
+    }
+    return e;
+}
+
+MatteExtent matteExtentOf(const MatteEntry* entries, size_t ranks, size_t begin, size_t end,
+                          MatteExtent e) {
+    switch (ranks) {  // Film::matteRanks is 1..kMatteRanks (writeExr checks)
+        case 1: return matteExtentOf<1>(entries, begin, end, e);
+        case 2: return matteExtentOf<2>(entries, begin, end, e);
+        case 3: return matteExtentOf<3>(entries, begin, end, e);
+        case 4: return matteExtentOf<4>(entries, begin, end, e);
+        case 5: return matteExtentOf<5>(entries, begin, end, e);
+        case 6: return matteExtentOf<6>(entries, begin, end, e);
+    }
+    static_assert(kMatteRanks == 6, "one case per rank count");
+    return e;
+}
+
+/// The extent of the film's mattes. Without `countRanks` usedRanks stays 0:
+/// when the film holds no more ranks per pixel than the file writes anyway,
+/// no pixel can use more, and the highest object index is all the scan must
+/// find (a plain maximum the compiler vectorises: balls --spd's scan was
+/// 14.4 M instructions with the counts, 11.8 M with them unrolled).
+MatteExtent matteExtent(const Film& film, bool countRanks) {
     const size_t ranks = size_t(film.matteRanks);
     const size_t pixels = film.mattes.size() / ranks;
+    const MatteEntry* entries = film.mattes.data();
     return tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, pixels, 8192), MatteExtent{},
         [&](const tbb::blocked_range<size_t>& r, MatteExtent e) {
-            for (size_t i = r.begin(); i != r.end(); ++i) {
-                int used = 0;
-                for (size_t k = 0; k < ranks; ++k) {
-                    const MatteEntry& m = film.mattes[i * ranks + k];
-                    used += m.object >= 0 && m.coverage > 0;
-                    e.maxObject = std::max(e.maxObject, int(m.object));
-                }
-                e.usedRanks = std::max(e.usedRanks, used);
-            }
+            if (countRanks) return matteExtentOf(entries, ranks, r.begin(), r.end(), e);
+            int maxObject = e.maxObject;
+            for (size_t j = r.begin() * ranks; j != r.end() * ranks; ++j)
+                maxObject = std::max(maxObject, int(entries[j].object));
+            e.maxObject = maxObject;
             return e;
         },
         [](MatteExtent a, const MatteExtent& b) {
@@ -143,10 +176,11 @@ const float* cryptomattePlane(const Film& film, size_t begin, size_t end,
 ExrMatteLayout exrMatteLayout(const Film& film, const std::vector<std::string>& objectNames,
                               int wantedRanks, int threads) {
     return runWithThreads(threads, [&] {
-        const MatteExtent extent = matteExtent(film);
+        const int wanted = std::clamp(wantedRanks, 1, kMatteRanks);
+        const MatteExtent extent = matteExtent(film, film.matteRanks > wanted);
         ExrMatteLayout layout;
         // Rounded up to a whole layer of two ranks.
-        const int ranks = std::max(std::clamp(wantedRanks, 1, kMatteRanks), extent.usedRanks);
+        const int ranks = std::max(wanted, extent.usedRanks);
         layout.ranks = (ranks + 1) / 2 * 2;
         layout.maxObject = extent.maxObject;
         // Object index -> id float, hashed once per object.

@@ -18,6 +18,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfThreading.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
 
 #include "renderer/cryptomatte_id.h"
 #include "renderer/io/atomic_file.h"
@@ -25,6 +26,7 @@
 #include "renderer/io/exr_planes.h"
 #include "renderer/io/exr_string_attribute.h"
 #include "renderer/io/exr_zip_file.h"
+#include "renderer/thread_arena.h"
 
 namespace raylab {
 
@@ -138,9 +140,30 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
 
     // The Cryptomatte layout needs the whole film (how many ranks, which
     // objects) before the header can be written; the planes are prepared
-    // block by block below (exr_planes.h).
-    const ExrMatteLayout mattes =
-        exrMatteLayout(film, opts.objectNames, opts.matteRanks, opts.threads);
+    // block by block below (exr_planes.h). The manifest needs only the
+    // objects' names: made beside the film's scan, not after it (on balls
+    // --spd each was 1-2 ms of the write's serial head).
+    ExrMatteLayout mattes;
+    std::vector<std::string> names;  // object index -> its name in the manifest
+    std::string manifest;
+    const auto nameObjectsUpTo = [&](int last) {
+        names.reserve(size_t(std::max(last + 1, 0)));
+        for (int k = int(names.size()); k <= last; ++k)
+            names.push_back(matteName(opts.objectNames, k));
+    };
+    runWithThreads(opts.threads, [&] {
+        tbb::parallel_invoke(
+            [&] { mattes = exrMatteLayout(film, opts.objectNames, opts.matteRanks, 0); },
+            [&] {
+                nameObjectsUpTo(int(opts.objectNames.size()) - 1);
+                manifest = cryptomatteManifest(names);
+            });
+    });
+    // The film may name objects the scene did not ("objectN"): rare, redone.
+    if (mattes.maxObject >= int(names.size())) {
+        nameObjectsUpTo(mattes.maxObject);
+        manifest = cryptomatteManifest(names);
+    }
     const int matteRanks = mattes.ranks;
     // A crop render is the data window inside the full image's display window.
     const Imath::Box2i dataWindow = exrDataWindow(film);
@@ -153,16 +176,10 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         header.insert("worldToNDC", Imf::M44fAttribute(toM44f(opts.camera->worldToNDC)));
     }
     const std::string cryptoPrefix = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/";
-    std::vector<std::string> names;
-    {
-        const int maxObject = std::max(int(opts.objectNames.size()) - 1, mattes.maxObject);
-        names.reserve(size_t(maxObject + 1));
-        for (int k = 0; k <= maxObject; ++k) names.push_back(matteName(opts.objectNames, k));
-    }
     header.insert(cryptoPrefix + "name", ExrStringAttribute(kCryptoObjectLayer));
     header.insert(cryptoPrefix + "hash", ExrStringAttribute("MurmurHash3_32"));
     header.insert(cryptoPrefix + "conversion", ExrStringAttribute("uint32_to_float32"));
-    header.insert(cryptoPrefix + "manifest", ExrStringAttribute(cryptomatteManifest(names)));
+    header.insert(cryptoPrefix + "manifest", ExrStringAttribute(manifest));
     if (!opts.settings.empty())
         header.insert("raylab/settings", ExrStringAttribute(opts.settings));
     if (!opts.alpha.empty()) header.insert("raylab/alpha", ExrStringAttribute(opts.alpha));

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "renderer/cryptomatte_id.h"
 #include "renderer/film.h"
 #include "renderer/io/json.h"
+#include "renderer/io/json_string.h"
 #include "renderer/io/png_writer.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
@@ -130,6 +132,27 @@ TEST_CASE("output: MurmurHash3_x86_32 and the Cryptomatte id conversion") {
     CHECK(cryptomatteManifest({"a", "b \"q\"", "a"}) ==
           "{\"a\":\"" + cryptomatteHex(cryptomatteIdBits("a")) + "\",\"b \\\"q\\\"\":\"" +
               cryptomatteHex(cryptomatteIdBits("b \"q\"")) + "\"}");
+}
+
+TEST_CASE("output: the Cryptomatte manifest of thousands of names, repeats and escapes, as a plain reference makes it") {
+    // The reference: every name's first occurrence, in order, found with a
+    // std::set (the manifest's own table is keyed by the names' ids).
+    std::vector<std::string> names;
+    for (int i = 0; i < 5000; ++i)
+        names.push_back(i % 7 == 3 ? "quote\"" + std::to_string(i % 11) : "obj" + std::to_string((i * 7919) % 1237));
+    names.push_back("");  // an empty name is a name too
+    names.push_back("");
+    std::set<std::string> seen;
+    std::string expected = "{";
+    for (const std::string& name : names) {
+        if (!seen.insert(name).second) continue;
+        if (expected.size() > 1) expected += ',';
+        expected += jsonString(name) + ":\"" + cryptomatteHex(cryptomatteIdBits(name)) + "\"";
+    }
+    expected += "}";
+    CHECK(seen.size() == 1237 + 11 + 1);
+    CHECK(cryptomatteManifest(names) == expected);
+    CHECK(cryptomatteManifest({}) == "{}");
 }
 
 TEST_CASE("output: Z is planar depth, distance is Euclidean, on a tilted plane") {
