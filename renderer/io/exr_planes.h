@@ -34,9 +34,9 @@ struct ExrMatteLayout {
     std::vector<float> idOf;
 };
 
-/// Scans the film's mattes (TBB tasks on up to `threads` threads, 0: TBB's
-/// default): `wantedRanks` as ExrOptions::matteRanks, object names as
-/// ExrOptions::objectNames.
+/// Scans the film's mattes (TBB tasks on up to `threads` threads; 0: in the
+/// calling thread's arena, within its limit): `wantedRanks` as
+/// ExrOptions::matteRanks, object names as ExrOptions::objectNames.
 ExrMatteLayout exrMatteLayout(const Film& film, const std::vector<std::string>& objectNames,
                               int wantedRanks, int threads);
 

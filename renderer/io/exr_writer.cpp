@@ -153,6 +153,8 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     };
     runWithThreads(opts.threads, [&] {
         tbb::parallel_invoke(
+            // 0: in this arena, already limited to opts.threads (a nested
+            // arena of its own could add threads).
             [&] { mattes = exrMatteLayout(film, opts.objectNames, opts.matteRanks, 0); },
             [&] {
                 nameObjectsUpTo(int(opts.objectNames.size()) - 1);

@@ -18,6 +18,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include "renderer/cryptomatte_id.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_reader.h"
 #include "renderer/io/exr_writer.h"
@@ -474,4 +475,22 @@ TEST_CASE("exr: the Cryptomatte layers written are those the ranks need, with th
     CHECK(oneLayer.size() == 4);
     CHECK(oneLayer.at("CryptoObject00.G")[0] == 1.f);
     CHECK(channelTypes(dir.file("one.exr")).size() == 17);
+}
+
+TEST_CASE("exr: the manifest also names the objects the film covers beyond the scene's names") {
+    // Objects 2 and 3 have no name in the options: the manifest lists them as
+    // "objectN", after the scene's names, as the matte ranks' ids do.
+    TempDir dir;
+    const std::string path = dir.file("m.exr");
+    Film f(2, 1);
+    f.mattesOf(0)[0] = {1, 1.f};
+    f.mattesOf(1)[0] = {3, 1.f};
+    ExrOptions o = makeOptions(false);
+    o.objectNames = {"a", "b"};
+    writeExr(path, f, o);
+    Imf::InputFile in(path.c_str());
+    const std::string key = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/manifest";
+    const auto* manifest = in.header().findTypedAttribute<Imf::StringAttribute>(key);
+    REQUIRE(manifest != nullptr);
+    CHECK(manifest->value() == cryptomatteManifest({"a", "b", "object2", "object3"}));
 }
