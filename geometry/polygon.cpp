@@ -543,8 +543,6 @@ bool Polygon::insideWatertight(const Vec3T<T>& o, const Vec3T<T>& d, bool chunkB
 }
 
 int Polygon::insideByGrid(const Ray& ray, double t, double cosine, const Vec3& local) const {
-    const PolygonGrid::Cell cell = m_grid->at(dot(local, m_frame.t), dot(local, m_frame.b));
-    if (cell == PolygonGrid::Cell::Edge) return -1;
     // The grid's answer is the watertight test's when every error stays below
     // the clearance. With H the exact plane hit and p = `local` (computed),
     // u = 2^-53, cos = |n·d|/|d|, S = |o - c| + |t||d| + radius:
@@ -572,6 +570,23 @@ int Polygon::insideByGrid(const Ray& ray, double t, double cosine, const Vec3& l
     if (!(s <= kGridMaxScale && dMax >= kGridMinDirection)) return -1;
     const double error = (256 * 0x1p-53 * s + 4 * m_deviation) * 2 * dMax;
     const double cosineLow = std::abs(cosine) - 16 * 0x1p-53 * dMax;
+    // The zones about the centroid first (no load of the grid's cells). The
+    // exact hit H lies in the plane within |local| + |p - H| of the centroid,
+    // and no nearer than |local| - |p - H|: inside the inner disc every edge
+    // is at least inner - |local| - |p - H| from H, beyond the outer circle
+    // at least |local| - outer - |p - H| (each radius keeps a clearance in
+    // hand, PolygonGrid::measureZones). The bound above covers |p - H| with
+    // the vertices' own errors, as it does for a cell.
+    const double r2 = dot(local, local);
+    const double inner = m_grid->innerRadius(), outer = m_grid->outerRadius();
+    if (r2 < inner * inner) {
+        if (error < (inner - std::sqrt(r2)) * cosineLow)
+            return m_grid->originCell() == PolygonGrid::Cell::Inside ? 1 : 0;
+    } else if (r2 > outer * outer) {
+        if (error < (std::sqrt(r2) - outer) * cosineLow) return 0;
+    }
+    const PolygonGrid::Cell cell = m_grid->at(dot(local, m_frame.t), dot(local, m_frame.b));
+    if (cell == PolygonGrid::Cell::Edge) return -1;
     if (!(error < m_grid->clearance() * cosineLow)) return -1;
     return cell == PolygonGrid::Cell::Inside ? 1 : 0;
 }

@@ -30,6 +30,15 @@ bool segmentMeetsBox(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& h
     return true;
 }
 
+/// Distance from the origin to segment a-b.
+double originDistance(const Vec2& a, const Vec2& b) {
+    const Vec2 e = b - a;
+    const double ee = e.x * e.x + e.y * e.y;
+    const double f = ee > 0 ? std::clamp(-(a.x * e.x + a.y * e.y) / ee, 0.0, 1.0) : 0.0;
+    const Vec2 p = a + e * f;
+    return std::sqrt(p.x * p.x + p.y * p.y);
+}
+
 }  // namespace
 
 PolygonGrid::PolygonGrid(const std::vector<Vec2>& vertices, FillRule rule, double clearance,
@@ -63,6 +72,27 @@ PolygonGrid::PolygonGrid(const std::vector<Vec2>& vertices, FillRule rule, doubl
     classifyRows(vertices, rule, grid);
     markEdges(vertices, grid);
     pack(grid);
+    measureZones(vertices);
+}
+
+void PolygonGrid::measureZones(const std::vector<Vec2>& vertices) {
+    double nearest = std::numeric_limits<double>::infinity(), farthest = 0;
+    const size_t n = vertices.size();
+    for (size_t k = 0; k < n; ++k) {
+        const Vec2& a = vertices[k];
+        nearest = std::min(nearest, originDistance(a, vertices[(k + 1) % n]));
+        farthest = std::max(farthest, std::sqrt(a.x * a.x + a.y * a.y));
+    }
+    // The disc of radius `nearest` holds no edge, so its points share one
+    // winding number; the origin's cell, if not an Edge cell, holds no edge
+    // either and has the origin's. Each radius gives up one clearance, as the
+    // cells keep twice it: room for the rounding of these distances (a few
+    // ulps of the polygon's size, the clearance at least 2^-20 of it) and of
+    // a query's own distance from the origin.
+    const Cell origin = at(0, 0);
+    m_originCell = origin == Cell::Edge ? Cell::Outside : origin;
+    m_innerRadius = origin == Cell::Edge ? 0.0 : std::max(0.0, nearest - m_clearance);
+    m_outerRadius = farthest + m_clearance;
 }
 
 void PolygonGrid::pack(const std::vector<Cell>& grid) {

@@ -14,6 +14,12 @@
 // long as those errors stay below the clearance. Polygon::intersectT checks
 // that bound per ray and otherwise (near edges, grazing rays) runs the
 // watertight test, which stays the arbiter on shared edges.
+//
+// Two zones about the plane's origin need no cell at all (the polygon puts
+// its centroid there): a disc that no edge comes near, whose points all share
+// the origin's answer, and everything beyond the farthest vertex, which is
+// outside. Most hits on SPD gears' faces land in one of them, and a radius
+// costs no load of the grid's memory.
 
 #include <cstdint>
 #include <vector>
@@ -52,6 +58,17 @@ public:
     }
 
     double clearance() const { return m_clearance; }
+
+    /// Points (u, v) with u² + v² < innerRadius()² lie at least clearance() +
+    /// innerRadius() - sqrt(u² + v²) from every edge, and all have
+    /// originCell()'s answer (0 when the origin is an Edge cell: no zone).
+    double innerRadius() const { return m_innerRadius; }
+    /// Inside or Outside: the answer at the origin and in the whole inner disc.
+    Cell originCell() const { return m_originCell; }
+    /// Points farther than outerRadius() from the origin lie at least
+    /// clearance() + (their distance - outerRadius()) beyond every vertex:
+    /// outside the polygon, under either fill rule.
+    double outerRadius() const { return m_outerRadius; }
     int columns() const { return m_nx; }
     int rows() const { return m_ny; }
     /// Fraction of the grid's cells that are Edge cells (for tests and tuning).
@@ -63,12 +80,16 @@ private:
                       std::vector<Cell>& cells) const;
     /// Packs the cells into m_packed and counts the Edge ones.
     void pack(const std::vector<Cell>& grid);
+    /// The zones about the origin (after pack: reads the origin's cell).
+    void measureZones(const std::vector<Vec2>& vertices);
 
     double m_u0 = 0, m_v0 = 0;           ///< lower-left corner of the grid
     double m_cellW = 1, m_cellH = 1;     ///< cell size
     double m_invCellW = 1, m_invCellH = 1;
     int m_nx = 1, m_ny = 1;
     double m_clearance = 0;
+    double m_innerRadius = 0, m_outerRadius = 0;
+    Cell m_originCell = Cell::Outside;
     /// Two bits a cell, row-major, row 0 at m_v0. A byte a cell put SPD gears'
     /// 128 grids (9 KB each) beyond a core's L2 cache, and more than half of
     /// the lookup's time went to the load of the cell.

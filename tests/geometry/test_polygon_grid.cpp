@@ -3,12 +3,16 @@
 // gives exactly the same answer (hit or miss, t, u, v) with the grid as with
 // the watertight test alone, for rays aimed anywhere (through vertices and
 // edges exactly, grazing, from far away, at scenes far from the origin and
-// tiny ones), under both fill rules.
+// tiny ones), under both fill rules. The zones about the centroid (a disc no
+// edge comes near, everything past the farthest vertex) against distances
+// computed by hand and point by point.
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "geometry/polygon.h"
 #include "geometry/polygon_grid.h"
@@ -42,6 +46,64 @@ std::vector<Vec3> star(const Vec3& normalTilt) {
         v.push_back(f.t * std::cos(a) + f.b * std::sin(a));
     }
     return v;
+}
+
+/// A {n/m} star polygon on the unit circle: its centre has winding number m.
+std::vector<Vec3> starPolygon(int n, int m, const Vec3& normalTilt) {
+    std::vector<Vec3> v;
+    const Frame f = Frame::fromNormal(normalize(normalTilt));
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * kPi * ((m * i) % n) / n;
+        v.push_back(f.t * std::cos(a) + f.b * std::sin(a));
+    }
+    return v;
+}
+
+/// A ring of radii 1 and 0.4 (24 vertices each) cut open along a zero-width
+/// slit: the outer circle counter-clockwise, the inner one clockwise. Its
+/// centre, where the vertex mean lies, is a hole: outside under both rules.
+std::vector<Vec3> keyhole(const Vec3& centre = {}) {
+    std::vector<Vec3> v;
+    for (int k = 0; k <= 24; ++k)
+        v.push_back(centre + Vec3{std::cos(2 * kPi * k / 24), std::sin(2 * kPi * k / 24), 0});
+    for (int k = 24; k >= 0; --k)
+        v.push_back(centre + Vec3{0.4 * std::cos(2 * kPi * k / 24), 0.4 * std::sin(2 * kPi * k / 24), 0});
+    return v;
+}
+
+std::vector<Vec2> flatten(const std::vector<Vec3>& v) {
+    std::vector<Vec2> out;
+    for (const Vec3& p : v) out.push_back({p.x, p.y});
+    return out;
+}
+
+/// Distance from p to the nearest edge of the closed outline v.
+double edgeDistance(const std::vector<Vec2>& v, const Vec2& p) {
+    double best = kInf;
+    for (size_t k = 0; k < v.size(); ++k) {
+        const Vec2 a = v[k] - p, e = v[(k + 1) % v.size()] - v[k];
+        const double ee = e.x * e.x + e.y * e.y;
+        const double f = ee > 0 ? std::clamp(-(a.x * e.x + a.y * e.y) / ee, 0.0, 1.0) : 0.0;
+        const Vec2 q = a + e * f;
+        best = std::min(best, std::hypot(q.x, q.y));
+    }
+    return best;
+}
+
+/// Winding-rule answer for point c (the half-open crossing count).
+bool insideOutline(const std::vector<Vec2>& v, FillRule rule, const Vec2& c) {
+    int winding = 0, count = 0;
+    for (size_t k = 0; k < v.size(); ++k) {
+        const Vec2& a = v[k];
+        const Vec2& b = v[(k + 1) % v.size()];
+        if ((a.y <= c.y) == (b.y <= c.y)) continue;
+        const double x = a.x + (c.y - a.y) * (b.x - a.x) / (b.y - a.y);
+        if (x > c.x) {
+            winding += b.y > a.y ? 1 : -1;
+            ++count;
+        }
+    }
+    return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
 }
 
 std::unique_ptr<Polygon> makeGridPolygon(std::vector<Vec3> v, FillRule rule) {
@@ -343,4 +405,89 @@ TEST_CASE("polygon grid: vertices off the plane (within the planarity tolerance)
     const Agreement a = compare(*gear, 11, 100000);
     CHECK(a.hits > 0);
     CHECK(a.differ == 0);
+}
+
+TEST_CASE("polygon grid: the zones about the origin, by hand and point by point") {
+    // Inner radius: the nearest edge's distance from the origin less the
+    // clearance; outer: the farthest vertex's plus it. A {n/m} star's edges
+    // pass cos(pi m/n) from its centre; the gear's nearest are the chords
+    // of its 0.8 roots, 0.8 cos(pi/144) away; the keyhole's the chords of
+    // its 0.4 hole.
+    const double clearance = 1e-3;
+    struct Case {
+        std::string name;
+        std::vector<Vec2> outline;
+        FillRule rule;
+        double nearest;
+        PolygonGrid::Cell origin;
+    };
+    const std::vector<Case> cases{
+        {"gear", flatten(gearFace()), FillRule::EvenOdd, 0.8 * std::cos(kPi / 144),
+         PolygonGrid::Cell::Inside},
+        {"keyhole even-odd", flatten(keyhole()), FillRule::EvenOdd, 0.4 * std::cos(kPi / 24),
+         PolygonGrid::Cell::Outside},
+        {"keyhole nonzero", flatten(keyhole()), FillRule::NonZero, 0.4 * std::cos(kPi / 24),
+         PolygonGrid::Cell::Outside},
+        // Winding 2 at the centre: outside by even-odd, inside by nonzero.
+        {"{15/2} even-odd", flatten(starPolygon(15, 2, {0, 0, 1})), FillRule::EvenOdd,
+         std::cos(2 * kPi / 15), PolygonGrid::Cell::Outside},
+        {"{15/2} nonzero", flatten(starPolygon(15, 2, {0, 0, 1})), FillRule::NonZero,
+         std::cos(2 * kPi / 15), PolygonGrid::Cell::Inside},
+        {"{15/7} even-odd", flatten(starPolygon(15, 7, {0, 0, 1})), FillRule::EvenOdd,
+         std::cos(7 * kPi / 15), PolygonGrid::Cell::Inside},
+    };
+    SplitMix64 rng(20261206);
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        const PolygonGrid grid(c.outline, c.rule, clearance, 64 * int(c.outline.size()));
+        CHECK(grid.originCell() == c.origin);
+        CHECK(grid.innerRadius() == doctest::Approx(c.nearest - clearance).epsilon(1e-12));
+        CHECK(grid.outerRadius() == doctest::Approx(1 + clearance).epsilon(1e-12));
+        long innerPoints = 0, outerPoints = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const Vec2 p{rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)};
+            const double r = std::hypot(p.x, p.y);
+            if (r < grid.innerRadius()) {
+                ++innerPoints;
+                CHECK(insideOutline(c.outline, c.rule, p) == (c.origin == PolygonGrid::Cell::Inside));
+                CHECK(edgeDistance(c.outline, p) >= clearance + grid.innerRadius() - r - 1e-12);
+            } else if (r > grid.outerRadius()) {
+                ++outerPoints;
+                CHECK(!insideOutline(c.outline, c.rule, p));
+                CHECK(edgeDistance(c.outline, p) >= clearance + r - grid.outerRadius() - 1e-12);
+            }
+        }
+        // About 20,000 · pi r^2 / 9 points fall in the inner disc (75 for {15/7}).
+        CHECK(innerPoints > 0.5 * 20000 * kPi * grid.innerRadius() * grid.innerRadius() / 9);
+        CHECK(outerPoints > 1000);
+    }
+    // An origin on an edge: no inner zone.
+    const std::vector<Vec2> onEdge{{0, -1}, {1, -1}, {2, -1}, {2, 0}, {2, 1}, {1, 1}, {0, 1}, {0, 0}};
+    const PolygonGrid grid(onEdge, FillRule::EvenOdd, clearance, 512);
+    CHECK(grid.innerRadius() == 0);
+    CHECK(grid.outerRadius() == doctest::Approx(std::sqrt(5.0) + clearance).epsilon(1e-12));
+}
+
+TEST_CASE("polygon grid: zones around a hole and a winding of 2 answer as the watertight test") {
+    // The inner zone answers from the origin's cell: a keyhole's centre is a
+    // hole, a {15/2} star's has winding 2 (outside by even-odd, inside by
+    // nonzero). Tilted and moved away from the origin, both fill rules.
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+        CAPTURE(int(rule));
+        const auto hole = makeGridPolygon(keyhole({3, -2, 0.5}), rule);
+        REQUIRE(hole->grid() != nullptr);
+        CHECK(hole->grid()->originCell() == PolygonGrid::Cell::Outside);
+        CHECK(hole->grid()->innerRadius() > 0.3);
+        const Agreement a = compare(*hole, 13, 100000);
+        CHECK(a.hits > 0);
+        CHECK(a.differ == 0);
+
+        const auto star2 = makeGridPolygon(starPolygon(15, 2, {0.2, 0.4, 1}), rule);
+        REQUIRE(star2->grid() != nullptr);
+        CHECK(star2->grid()->originCell() ==
+              (rule == FillRule::EvenOdd ? PolygonGrid::Cell::Outside : PolygonGrid::Cell::Inside));
+        const Agreement b = compare(*star2, 17, 100000);
+        CHECK(b.hits > 0);
+        CHECK(b.differ == 0);
+    }
 }
