@@ -3,8 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <algorithm>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
+
+#include <tbb/parallel_for.h>
 
 #include <emmintrin.h>
 
@@ -77,22 +81,51 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& opt
 
 void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality quality) {
     m_user.origin = m_origin;
-    std::vector<Bounds3> boxes;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const Object& o = scene.objects[i];
-        if (!o.shape || o.shape->nativeTriangles()) continue;
-        const bool cutsOut = m_filter.cutsOut(uint32_t(i));
-        const bool transmits = m_filter.filters(uint32_t(i)) && !cutsOut;
-        for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
-            // One entry per covering box, all naming the same primitive.
-            boxes.clear();
-            o.shape->appendCoveringBoxes(prim, m_user.options, boxes);
-            for (const Bounds3& box : boxes) {
-                m_user.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
-                m_user.boxes.push_back(
-                    namingObject(o, [&] { return toEmbreeBounds(box, m_origin); }));
+    // Blocks of objects in parallel (SPD gears: 9,345 polygons, ~1 ms on one
+    // thread before Embree's build), joined in object order: the table, and
+    // the first error in object order, are what the serial loop gives.
+    constexpr size_t kBlock = 512;
+    const size_t objects = scene.objects.size();
+    struct Part {
+        std::vector<EmbreeUserTable::Entry> entries;
+        std::vector<RTCBounds> boxes;
+        std::exception_ptr error;
+    };
+    std::vector<Part> parts((objects + kBlock - 1) / kBlock);
+    tbb::parallel_for(size_t(0), parts.size(), [&](size_t b) {
+        Part& part = parts[b];
+        std::vector<Bounds3> boxes;
+        try {
+            for (size_t i = b * kBlock; i < std::min(objects, (b + 1) * kBlock); ++i) {
+                const Object& o = scene.objects[i];
+                if (!o.shape || o.shape->nativeTriangles()) continue;
+                const bool cutsOut = m_filter.cutsOut(uint32_t(i));
+                const bool transmits = m_filter.filters(uint32_t(i)) && !cutsOut;
+                for (uint32_t prim = 0; prim < o.shape->primitiveCount(); ++prim) {
+                    // One entry per covering box, all naming the same primitive.
+                    boxes.clear();
+                    o.shape->appendCoveringBoxes(prim, m_user.options, boxes);
+                    for (const Bounds3& box : boxes) {
+                        part.entries.push_back({o.shape.get(), prim, uint32_t(i), cutsOut, transmits});
+                        part.boxes.push_back(
+                            namingObject(o, [&] { return toEmbreeBounds(box, m_origin); }));
+                    }
+                }
             }
+        } catch (...) {
+            part.error = std::current_exception();
         }
+    });
+    size_t total = 0;
+    for (const Part& part : parts) {
+        if (part.error) std::rethrow_exception(part.error);
+        total += part.entries.size();
+    }
+    m_user.entries.reserve(total);
+    m_user.boxes.reserve(total);
+    for (const Part& part : parts) {
+        m_user.entries.insert(m_user.entries.end(), part.entries.begin(), part.entries.end());
+        m_user.boxes.insert(m_user.boxes.end(), part.boxes.begin(), part.boxes.end());
     }
     if (m_user.entries.empty()) return;
     m_userGeomId = attachUserGeometry(m_device, m_scene.get(), m_user, quality);

@@ -283,6 +283,21 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
                              "embree: object 'broken' (nan-bounds): NaN bounds",
                              std::invalid_argument);
     }
+    SUBCASE("the first broken object in scene order is named, whichever thread meets it") {
+        // The user-geometry table is made from blocks of objects in parallel;
+        // the error is still the one a loop in object order meets first.
+        Scene scene;
+        for (int i = 0; i < 3000; ++i) {
+            const bool broken = i == 700 || i == 2500;
+            scene.objects.push_back(
+                broken ? shapeObject("broken" + std::to_string(i), std::make_unique<NanBoundsShape>())
+                       : shapeObject("ball" + std::to_string(i), makeSphere({double(i), 0, 0}, 0.4)));
+        }
+        for (int repeat = 0; repeat < 20; ++repeat)
+            CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
+                                 "embree: object 'broken700' (nan-bounds): NaN bounds",
+                                 std::invalid_argument);
+    }
     SUBCASE("index out of range") {
         Scene scene;
         auto mesh = quadMesh(0, 0, 1, 1, 0);
