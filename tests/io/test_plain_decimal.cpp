@@ -13,8 +13,10 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "geometry/sphere.h"
+#include "renderer/io/errors.h"
 #include "renderer/io/plain_decimal.h"
 #include "renderer/io/scene_loader.h"
 #include "renderer/io/wavefront_text.h"
@@ -143,6 +145,91 @@ TEST_CASE("NFF numbers: plain, signed, exponent and long forms read as from_char
     bitsEqual("0.12345678901234567", b->centre().x);
     bitsEqual("-7.000001", b->centre().y);
     bitsEqual("2.5", b->radius());
+}
+
+TEST_CASE("NFF numbers: random tokens and separators, every value as from_chars reads it") {
+    // The reader takes a plain decimal in one pass with its token; any other
+    // form goes through from_chars. Spheres whose four numbers are random
+    // tokens of every valid form, separated by any whitespace, '#' comments
+    // and line breaks, the last one ending the file: each value bit for bit
+    // as from_chars gives it, each count error on the line of the last
+    // number read.
+    Pcg32 rng(20261206, 11);
+    const char* const separators[] = {" ", "\t", "\n", "  \r\n", "\f", "\v", " # note 1.5\n", "\n\n"};
+    const auto randomToken = [&] {
+        std::string t;
+        switch (rng.next() % 4) {
+            case 0:  // "%f"-like
+                if (rng.next() % 2) t += '-';
+                for (int k = 0, a = 1 + int(rng.next() % 9); k < a; ++k) t += char('0' + rng.next() % 10);
+                if (rng.next() % 4) {
+                    t += '.';
+                    for (int k = 0, b = 1 + int(rng.next() % 9); k < b; ++k) t += char('0' + rng.next() % 10);
+                }
+                break;
+            case 1: {  // around the 15-digit limit
+                if (rng.next() % 2) t += '-';
+                const int a = 1 + int(rng.next() % 18), dot = int(rng.next() % (a + 1));
+                for (int k = 0; k < a; ++k) {
+                    if (k == dot && k > 0) t += '.';
+                    t += char('0' + rng.next() % 10);
+                }
+                break;
+            }
+            case 2: {  // from_chars' forms: exponents, '+', leading '.'
+                const char* const forms[] = {"1e-3", "+2.5", ".75", "-.5", "3E2", "+0", "1.5e+1"};
+                t = forms[rng.next() % 7];
+                break;
+            }
+            default:
+                t = std::to_string(rng.next() % 100000);
+        }
+        return t;
+    };
+    for (int file = 0; file < 200; ++file) {
+        std::string text = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 8 8\nf 1 1 1 1 0 1 0 0\n";
+        std::vector<std::string> tokens;
+        std::vector<size_t> offsets;  // where each token starts in the text
+        const int spheres = 1 + int(rng.next() % 50);
+        for (int k = 0; k < 4 * spheres; ++k) {
+            if (k % 4 == 0) text += std::string(separators[rng.next() % 8]) + "s";
+            std::string t = randomToken();
+            if (k % 4 == 3) {  // a radius: positive
+                if (t[0] == '-' || t[0] == '+') t.erase(0, 1);
+                if (!(reference(t).value_or(0) > 0)) t = "2.5";
+            }
+            tokens.push_back(t);
+            text += separators[rng.next() % 8];
+            offsets.push_back(text.size());
+            text += t;
+        }
+        CAPTURE(text);
+        const Scene scene = loadNffScene(text, "random.nff");
+        REQUIRE(scene.objects.size() == size_t(spheres));
+        for (int k = 0; k < spheres; ++k) {
+            const auto* ball = dynamic_cast<const Sphere*>(scene.objects[size_t(k)].shape.get());
+            REQUIRE(ball);
+            const double got[4] = {ball->centre().x, ball->centre().y, ball->centre().z, ball->radius()};
+            for (int c = 0; c < 4; ++c) {
+                const std::optional<double> want = reference(tokens[size_t(4 * k + c)]);
+                REQUIRE(want);
+                CHECK(std::memcmp(&*want, &got[c], sizeof(double)) == 0);
+            }
+        }
+        // One number short: the error names the line of the last number read.
+        const size_t cut = offsets.back();
+        std::string shortText = text.substr(0, cut);
+        try {
+            (void)loadNffScene(shortText, "short.nff");
+            FAIL("a sphere of 3 numbers was accepted");
+        } catch (const InputError& e) {
+            CHECK(std::string(e.what()).find("got 3 numbers") != std::string::npos);
+            // The third number's line, whatever the separator after it spans.
+            int thirdLine = 1;
+            for (size_t i = 0; i < offsets[offsets.size() - 2]; ++i) thirdLine += text[i] == '\n';
+            CHECK(e.line() == thirdLine);
+        }
+    }
 }
 
 namespace {
