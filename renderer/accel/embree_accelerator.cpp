@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <exception>
 #include <stdexcept>
@@ -92,7 +93,11 @@ void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality qual
         std::exception_ptr error;
     };
     std::vector<Part> parts((objects + kBlock - 1) / kBlock);
+    // Blocks after one that failed need not be made: its error, or an
+    // earlier block's, is the one rethrown.
+    std::atomic<size_t> firstFailed{parts.size()};
     tbb::parallel_for(size_t(0), parts.size(), [&](size_t b) {
+        if (b > firstFailed.load(std::memory_order_relaxed)) return;
         Part& part = parts[b];
         std::vector<Bounds3> boxes;
         try {
@@ -114,6 +119,9 @@ void EmbreeAccelerator::addUserGeometry(const Scene& scene, RTCBuildQuality qual
             }
         } catch (...) {
             part.error = std::current_exception();
+            size_t seen = firstFailed.load(std::memory_order_relaxed);
+            while (b < seen && !firstFailed.compare_exchange_weak(seen, b, std::memory_order_relaxed)) {
+            }
         }
     });
     size_t total = 0;

@@ -284,18 +284,20 @@ TEST_CASE("embree: geometry Embree cannot represent is rejected at build time") 
                              std::invalid_argument);
     }
     SUBCASE("the first broken object in scene order is named, whichever thread meets it") {
-        // The user-geometry table is made from blocks of objects in parallel;
-        // the error is still the one a loop in object order meets first.
+        // The user-geometry table is made from blocks of 512 objects in
+        // parallel; the error is still the one a loop in object order meets
+        // first. The first broken object ends its block and the second starts
+        // one, so the later block's error is usually met first in time.
         Scene scene;
         for (int i = 0; i < 3000; ++i) {
-            const bool broken = i == 700 || i == 2500;
+            const bool broken = i == 1023 || i == 1536;
             scene.objects.push_back(
                 broken ? shapeObject("broken" + std::to_string(i), std::make_unique<NanBoundsShape>())
                        : shapeObject("ball" + std::to_string(i), makeSphere({double(i), 0, 0}, 0.4)));
         }
         for (int repeat = 0; repeat < 20; ++repeat)
             CHECK_THROWS_WITH_AS(EmbreeAccelerator{scene},
-                                 "embree: object 'broken700' (nan-bounds): NaN bounds",
+                                 "embree: object 'broken1023' (nan-bounds): NaN bounds",
                                  std::invalid_argument);
     }
     SUBCASE("index out of range") {

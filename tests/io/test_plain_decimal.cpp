@@ -155,7 +155,7 @@ TEST_CASE("NFF numbers: random tokens and separators, every value as from_chars 
     // as from_chars gives it, each count error on the line of the last
     // number read.
     Pcg32 rng(20261206, 11);
-    const char* const separators[] = {" ", "\t", "\n", "  \r\n", "\f", "\v", " # note 1.5\n", "\n\n"};
+    const char* const separators[] = {" ", "\t", "\n", "  \r\n", "\f", "\v", "#c 1.5\n", "\n\n"};
     const auto randomToken = [&] {
         std::string t;
         switch (rng.next() % 4) {
@@ -228,6 +228,34 @@ TEST_CASE("NFF numbers: random tokens and separators, every value as from_chars 
             int thirdLine = 1;
             for (size_t i = 0; i < offsets[offsets.size() - 2]; ++i) thirdLine += text[i] == '\n';
             CHECK(e.line() == thirdLine);
+        }
+    }
+}
+
+TEST_CASE("NFF numbers: tokens that are not plain decimals, read or refused as before") {
+    // The one-pass path must leave these to from_chars and its errors: each
+    // as the sphere's centre x, on line 9, followed by '#' with no space.
+    const std::string head =
+        "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 8 8\nf 1 1 1 1 0 1 0 0\n";
+    for (const char* token : {"1.", "-", "1x", "1.5.2", "--1", "-.5", "+1", "1e3", "12345678901234567",
+                              "0x10", "1-", "nan"}) {
+        CAPTURE(token);
+        const std::string text = head + "s " + token + "#c\n0 0 1\n";
+        const std::optional<double> want = reference(token);
+        if (want) {
+            const Scene scene = loadNffScene(text, "token.nff");
+            const auto* ball = dynamic_cast<const Sphere*>(scene.objects.at(0).shape.get());
+            REQUIRE(ball);
+            const double x = ball->centre().x;
+            CHECK(std::memcmp(&*want, &x, sizeof x) == 0);
+        } else {
+            try {
+                (void)loadNffScene(text, "token.nff");
+                FAIL("accepted");
+            } catch (const InputError& e) {
+                CHECK(e.line() == 9);
+                CHECK(std::string(e.what()).find(std::string("'") + token + "'") != std::string::npos);
+            }
         }
     }
 }
