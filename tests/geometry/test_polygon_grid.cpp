@@ -90,7 +90,9 @@ double edgeDistance(const std::vector<Vec2>& v, const Vec2& p) {
     return best;
 }
 
-/// Winding-rule answer for point c (the half-open crossing count).
+/// Winding-rule answer for point c: the signed count of edges crossing c's
+/// horizontal line to its right, half-open (an edge counts when exactly one
+/// end lies at or below the line).
 bool insideOutline(const std::vector<Vec2>& v, FillRule rule, const Vec2& c) {
     int winding = 0, count = 0;
     for (size_t k = 0; k < v.size(); ++k) {
@@ -241,21 +243,9 @@ TEST_CASE("polygon grid: every non-Edge cell holds the winding of its centre, co
     // The grid classifies a row's cells in runs between crossings; this is
     // the definition it must reproduce, cell by cell: the signed count of
     // edges crossing the centre's horizontal line to its right (half-open:
-    // an edge counts when exactly one end lies at or below the line).
-    const auto expected = [](const std::vector<Vec2>& v, FillRule rule, const Vec2& c) {
-        int winding = 0, count = 0;
-        for (size_t k = 0; k < v.size(); ++k) {
-            const Vec2& a = v[k];
-            const Vec2& b = v[(k + 1) % v.size()];
-            if ((a.y <= c.y) == (b.y <= c.y)) continue;
-            const double x = a.x + (c.y - a.y) * (b.x - a.x) / (b.y - a.y);
-            if (x > c.x) {
-                winding += b.y > a.y ? 1 : -1;
-                ++count;
-            }
-        }
-        return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
-    };
+    // an edge counts when exactly one end lies at or below the line):
+    // insideOutline.
+    const auto expected = insideOutline;
     std::vector<std::vector<Vec2>> shapes;
     std::vector<Vec2> gear, starOutline, square;
     for (const Vec3& p : gearFace()) gear.push_back({p.x, p.y});
