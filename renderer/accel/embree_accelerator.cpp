@@ -1,10 +1,10 @@
 #include "renderer/accel/embree_accelerator.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <algorithm>
-#include <atomic>
 #include <cstring>
 #include <exception>
 #include <stdexcept>

@@ -125,8 +125,8 @@ public:
     /// digits, at most 15 digits) ended by whitespace, '#' or the end: true,
     /// with the value and the token's line, as next() + plainDecimal() give.
     /// Any other token is left unread (false) for next(). Nearly every
-    /// number of an SPD file takes this path (a third of its parse went to
-    /// scanning each token twice).
+    /// number of an SPD file takes this path (number() was a quarter of
+    /// gears' parse when each token was scanned twice).
     bool nextPlainDecimal(double& value) {
         skipSpace();
         const char* p = m_p;
