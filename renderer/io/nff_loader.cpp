@@ -121,34 +121,18 @@ public:
     }
 
     /// The next token read in the same pass as its value when it is a plain
-    /// decimal (plainDecimal's form: optional '-', digits, optional '.' and
-    /// digits, at most 15 digits) ended by whitespace, '#' or the end: true,
+    /// decimal (plainDecimalPrefix's form) ended by whitespace, '#' or the end: true,
     /// with the value and the token's line, as next() + plainDecimal() give.
     /// Any other token is left unread (false) for next(). Nearly every
     /// number of an SPD file takes this path (number() was a quarter of
     /// gears' parse when each token was scanned twice).
     bool nextPlainDecimal(double& value) {
         skipSpace();
-        const char* p = m_p;
-        const bool negative = p < m_end && *p == '-';
-        if (negative) ++p;
-        uint64_t m = 0;  // wraps past 19 digits, which are refused below
-        const char* const digitsStart = p;
-        for (; p < m_end && unsigned(*p - '0') < 10u; ++p) m = m * 10 + uint64_t(*p - '0');
-        size_t digits = size_t(p - digitsStart);
-        if (digits == 0) return false;
-        size_t fraction = 0;
-        if (p < m_end && *p == '.') {
-            const char* const fractionStart = ++p;
-            for (; p < m_end && unsigned(*p - '0') < 10u; ++p) m = m * 10 + uint64_t(*p - '0');
-            fraction = size_t(p - fractionStart);
-            if (fraction == 0) return false;
-            digits += fraction;
-        }
-        if ((p < m_end && !endsToken(*p)) || digits > 15) return false;
-        const double v = double(m) / kExactPowersOf10[fraction];
-        value = negative ? -v : v;
-        m_p = p;
+        const char* stop = m_p;
+        const std::optional<double> v = plainDecimalPrefix(m_p, m_end, stop);
+        if (!v || (stop < m_end && !endsToken(*stop))) return false;
+        value = *v;
+        m_p = stop;
         m_tokenLine = m_line;
         return true;
     }
