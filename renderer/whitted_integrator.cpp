@@ -40,6 +40,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // The general kernel traces every ray type at every hit, zero weights
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
+    m_shadowHints = accel.usesOcclusionHints(m_effects.filteredShadows);
     // One instantiation of trace<E> per effect combination, chosen once here.
     constexpr unsigned kKernels = 2 * kTextures;
     static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
@@ -69,7 +70,8 @@ double WhittedIntegrator::cameraTMin(const Ray& cameraRay) const {
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
                             SampleRays& spent, ShadowCache* shadows,
                             const std::optional<Hit>* cameraHit) const {
-    if (shadows) shadows->prepare(m_scene.lights.size(), m_options.maxDepth);
+    if (!m_shadowHints) shadows = nullptr;
+    if (shadows) shadows->prepare(m_scene.objects.size(), m_scene.lights.size(), m_options.maxDepth);
     TraceState state{counters, shadows, spent};
     return (this->*m_kernel)(cameraRay, cameraTMin(cameraRay), state, first, cameraHit);
 }
@@ -120,6 +122,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
         // SPD counts shadow rays even from surfaces without a local term.
         if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
         const Color diffuse = diffuseAt(si, m);
+        ShadowCache::Receiver slots{};
+        if (state.shadows) slots = state.shadows->receiver(si.object, depth);
         for (size_t li = 0; li < m_scene.lights.size(); ++li) {
             const Light& light = m_scene.lights[li];
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
@@ -141,20 +145,26 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             const Departure from = departure(si, toLight);
             state.counters.count(RayType::Shadow, depth + 1);
             ++state.spent.traced;
-            OcclusionHint* hint = state.shadows ? &state.shadows->at(li, depth) : nullptr;
+            // The occluders of earlier feelers from this surface are this
+            // one's first guesses (shadow_cache.h): less work, the same answer.
+            OcclusionHint hint;
+            if (state.shadows) hint = state.shadows->hint(slots, li);
             // Filtered shadows: the light arrives dimmed by the transmitters
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
             if (m_effects.filteredShadows) {
                 const Color through =
-                    hint ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, *hint)
-                         : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
+                    state.shadows ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
+                                  : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
+                if (state.shadows) state.shadows->remember(slots, li, hint);
                 if (through.isBlack() || !facing) continue;
                 arriving = saturated(arriving * saturated(through));
-            } else if ((hint ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, *hint)
-                             : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from)) ||
-                       !facing) {
-                continue;
+            } else {
+                const bool blocked =
+                    state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
+                                  : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
+                if (state.shadows) state.shadows->remember(slots, li, hint);
+                if (blocked || !facing) continue;
             }
             result += lambert(diffuse, arriving, n, l);
             if constexpr ((E & kHighlights) != 0) {

@@ -55,7 +55,8 @@ public:
     /// hit's AOV data. After a stop request (renderer/cancel.h) no further
     /// reflection or refraction ray is traced: the result is then partial.
     /// `shadows` (may be null) is the calling thread's shadow cache: it
-    /// changes no answer, only how fast shadow rays are answered.
+    /// changes no answer, only how fast shadow rays are answered (unused
+    /// where the accelerator can use no hint: Accelerator::usesOcclusionHints).
     /// `cameraHit`, when given, is the camera ray's first hit as the
     /// accelerator answered it (cameraHits): it is not asked again.
     Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
@@ -132,6 +133,7 @@ private:
     RenderOptions m_options;
     EffectSet m_effects;
     bool m_prune = true;  ///< skip zero-weight rays (off for the general kernel and SPD)
+    bool m_shadowHints = false;  ///< the accelerator can use a ShadowCache's hints
     /// Per object, which rays leaving it could meet it again (Shape::revisit;
     /// Any for every object where RenderOptions::departures does not apply).
     std::vector<Revisit> m_revisit;

@@ -17,12 +17,15 @@
 
 namespace raylab {
 
-/// What an accelerator remembers about the last occluder of a shadow ray, for
-/// the next, similar one (the integrator's ShadowCache keeps one per light and
-/// depth). Opaque: its meaning is the accelerator's own.
+/// What an accelerator remembers about the occluders of earlier shadow rays,
+/// for a similar one (the integrator's ShadowCache keeps them per receiver,
+/// light and depth). Opaque: its meaning is the accelerator's own.
 struct OcclusionHint {
     static constexpr uint32_t kNone = 0xffffffffu;
+    /// Asked first; on return the occluder found, or kNone when none was.
     uint32_t primitive = kNone;
+    /// Asked second, when it differs and `primitive` does not block.
+    uint32_t fallback = kNone;
 };
 
 /// The object a spawned ray leaves, named when the ray cannot meet it again
@@ -78,6 +81,13 @@ public:
                           OcclusionHint& hint) const {
         (void)hint;
         return occluded(ray, tMin, tMax, from);
+    }
+    /// Whether the hinted form of occluded() (`filtered` false) or of
+    /// transmittance() (true) can use a hint on this scene: when not, the
+    /// integrator keeps no shadow cache (its bookkeeping would be all cost).
+    virtual bool usesOcclusionHints(bool filtered) const {
+        (void)filtered;
+        return false;
     }
     /// \brief What a shadow feeler carries from tMin to tMax (filtered shadows):
     ///   the product of the SurfaceFilter::transmission of every surface it

@@ -57,12 +57,18 @@ public:
                          std::optional<Hit>* out) const override;
     bool tracesPackets() const override { return true; }
     bool occluded(const Ray& ray, double tMin, double tMax, Departure from) const override;
-    /// The hint names a user-geometry primitive (its entry in the table): its
-    /// exact Shape::occluded test is exactly what the callback would run for
-    /// it, so when it reports a hit, Embree would too (its padded box contains
-    /// the primitive) and the traversal is skipped.
+    /// The hint names user-geometry primitives (their entries in the table):
+    /// the exact Shape::occluded test is exactly what the callback would run
+    /// for one, so when it reports a hit, Embree would too (its padded box
+    /// contains the primitive) and the traversal is skipped. The hint's
+    /// primitive is asked first, then its fallback.
     bool occluded(const Ray& ray, double tMin, double tMax, Departure from,
                   OcclusionHint& hint) const override;
+    /// Hints name user-geometry primitives (a scene of triangles alone has
+    /// none); a transmittance query through a surface filter ignores them.
+    bool usesOcclusionHints(bool filtered) const override {
+        return !m_user.entries.empty() && !(filtered && m_filter.active());
+    }
     Color transmittance(const Ray& ray, double tMin, double tMax, Departure from) const override;
     /// Without a surface filter, occluded() with the hint as black or white.
     Color transmittance(const Ray& ray, double tMin, double tMax, Departure from,
@@ -99,6 +105,10 @@ public:
                      Departure from = {}) const;
 
 private:
+    /// Whether user entry `entry` (anything else: false) provably blocks the
+    /// feeler, by its exact test (see the hinted occluded()).
+    bool blocksAsHinted(uint32_t entry, const Ray& ray, double tMin, double tMax,
+                        Departure from) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 

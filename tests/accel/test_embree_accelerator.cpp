@@ -513,8 +513,8 @@ TEST_CASE("embree: occlusion with a shadow-cache hint gives occluded()'s answer,
             CHECK(embree.occluded(ray, 1e-9, 1.0, again));
         }
         if (!expected) CHECK(carried.primitive == OcclusionHint::kNone);
-        // Any entry as the hint, blocking or not: the same answer.
-        OcclusionHint any{uint32_t(rng.next() % 300)};
+        // Any entries as the guesses, blocking or not: the same answer.
+        OcclusionHint any{uint32_t(rng.next() % 300), uint32_t(rng.next() % 300)};
         CHECK(embree.occluded(ray, 1e-9, 1.0, any) == expected);
         CHECK((embree.transmittance(ray, 1e-9, 1.0, any).isBlack()) == expected);
     }

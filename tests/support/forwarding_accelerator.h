@@ -29,6 +29,9 @@ public:
                   OcclusionHint& h) const override {
         return m_inner.occluded(r, tMin, tMax, from, h);
     }
+    bool usesOcclusionHints(bool filtered) const override {
+        return m_inner.usesOcclusionHints(filtered);
+    }
     Color transmittance(const Ray& r, double tMin, double tMax, Departure from) const override {
         return m_inner.transmittance(r, tMin, tMax, from);
     }
