@@ -13,7 +13,7 @@
 // by depth alone (one slot per light and depth, as this cache was first),
 // reflections that alternate between surfaces evict each other's occluders:
 // 512x512 `--spd`, feelers the cache did not answer and Embree found
-// blocked: gears 455 k -> 175 k, balls 106 k -> 67 k, rings 235 k -> 134 k
+// blocked: gears 455 k -> 175 k, balls 106 k -> 68 k, rings 235 k -> 135 k
 // (docs/benchmarks.md).
 //
 // The slots are direct-mapped tables of a fixed size: a scene with more
