@@ -20,6 +20,7 @@
 // receivers than slots shares them (a wrong guess costs one test), and the
 // cache's memory stays small for any scene (fresh pages are dear).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -46,32 +47,43 @@ public:
         m_lights = lights;
         m_maxDepth = maxDepth;
         m_depths = size_t(maxDepth) + 1;
-        m_byDepth.assign(slots(objects * lights * m_depths, kDepthSlots), OcclusionHint::kNone);
-        m_byReceiver.assign(slots(objects * lights, kReceiverSlots), OcclusionHint::kNone);
-        m_depthMask = m_byDepth.size() - 1;
-        m_receiverMask = m_byReceiver.size() - 1;
+        // A row of `lights` slots per key (receiver and depth; receiver).
+        m_depthKeys = keys(objects * m_depths, kDepthSlots / std::max<size_t>(lights, 1));
+        m_receiverKeys = keys(objects, kReceiverSlots / std::max<size_t>(lights, 1));
+        m_byDepth.assign(m_depthKeys * lights, OcclusionHint::kNone);
+        m_byReceiver.assign(m_receiverKeys * lights, OcclusionHint::kNone);
     }
 
-    /// The slots of receiver `object` at ray depth `depth`, one per light
-    /// from here (after prepare; computed once for all of a hit's feelers).
+    /// The slot rows of receiver `object` at ray depth `depth` (after
+    /// prepare; found once for all of a hit's feelers).
     struct Receiver {
-        size_t byDepth, byReceiver;
+        uint32_t* atDepth;
+        uint32_t* anyDepth;
     };
-    Receiver receiver(uint32_t object, int depth) const {
-        return {(size_t(object) * m_depths + size_t(depth)) * m_lights, size_t(object) * m_lights};
+    Receiver receiver(uint32_t object, int depth) {
+        // Consecutive objects get consecutive rows, so the receivers a tile
+        // sees (mostly neighbours in the scene's order) rarely share one.
+        const size_t depthKey = (size_t(object) * m_depths + size_t(depth)) & (m_depthKeys - 1);
+        const size_t receiverKey = size_t(object) & (m_receiverKeys - 1);
+        return {m_byDepth.data() + depthKey * m_lights, m_byReceiver.data() + receiverKey * m_lights};
     }
 
-    /// The guesses for a feeler from `r` to `light`.
-    OcclusionHint hint(const Receiver& r, size_t light) const {
-        return {m_byDepth[(r.byDepth + light) & m_depthMask],
-                m_byReceiver[(r.byReceiver + light) & m_receiverMask]};
-    }
-
-    /// What the accelerator answered for that feeler: its occluder, or none
-    /// (a lit point forgets the occluder: its neighbours are likely lit too).
-    void remember(const Receiver& r, size_t light, const OcclusionHint& answered) {
-        m_byDepth[(r.byDepth + light) & m_depthMask] = answered.primitive;
-        m_byReceiver[(r.byReceiver + light) & m_receiverMask] = answered.primitive;
+    /// The two slots of a feeler from `r` to `light`: its guesses, and where
+    /// its answer goes (valid until the next prepare).
+    struct Slots {
+        uint32_t* atDepth;
+        uint32_t* anyDepth;
+        OcclusionHint hint() const { return {*atDepth, *anyDepth}; }
+        /// What the accelerator answered for the feeler: its occluder, or
+        /// none (a lit point forgets the occluder: its neighbours are likely
+        /// lit too).
+        void remember(const OcclusionHint& answered) const {
+            *atDepth = answered.primitive;
+            *anyDepth = answered.primitive;
+        }
+    };
+    static Slots slots(const Receiver& r, size_t light) {
+        return {r.atDepth + light, r.anyDepth + light};
     }
 
     /// Slots in both tables (0 before prepare): the cache's memory is
@@ -79,19 +91,18 @@ public:
     size_t slotCount() const { return m_byDepth.size() + m_byReceiver.size(); }
 
 private:
-    /// The table's size: a power of two, at least `wanted` up to `most`.
-    /// Consecutive objects get consecutive slots, so the receivers a tile
-    /// sees (mostly neighbours in the scene's order) rarely share one.
-    static size_t slots(size_t wanted, size_t most) {
+    /// Keys of a table: a power of two, at least `wanted` up to `most` (the
+    /// largest power of two not above it; at least 1).
+    static size_t keys(size_t wanted, size_t most) {
         size_t n = 1;
-        while (n < wanted && n < most) n *= 2;
+        while (n < wanted && 2 * n <= most) n *= 2;
         return n;
     }
 
     size_t m_objects = 0, m_lights = 0, m_depths = 0;
-    size_t m_depthMask = 0, m_receiverMask = 0;
+    size_t m_depthKeys = 1, m_receiverKeys = 1;
     int m_maxDepth = -1;
-    std::vector<uint32_t> m_byDepth;     ///< primitive per (object, depth, light)
+    std::vector<uint32_t> m_byDepth;     ///< primitive per (object and depth, light)
     std::vector<uint32_t> m_byReceiver;  ///< primitive per (object, light)
 };
 

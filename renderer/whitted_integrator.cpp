@@ -122,8 +122,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
         // SPD counts shadow rays even from surfaces without a local term.
         if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
         const Color diffuse = diffuseAt(si, m);
-        ShadowCache::Receiver slots{};
-        if (state.shadows) slots = state.shadows->receiver(si.object, depth);
+        ShadowCache::Receiver receiver{};
+        if (state.shadows) receiver = state.shadows->receiver(si.object, depth);
         for (size_t li = 0; li < m_scene.lights.size(); ++li) {
             const Light& light = m_scene.lights[li];
             Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
@@ -148,7 +148,11 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             // The occluders of earlier feelers from this surface are this
             // one's first guesses (shadow_cache.h): less work, the same answer.
             OcclusionHint hint;
-            if (state.shadows) hint = state.shadows->hint(slots, li);
+            ShadowCache::Slots slots{};
+            if (state.shadows) {
+                slots = ShadowCache::slots(receiver, li);
+                hint = slots.hint();
+            }
             // Filtered shadows: the light arrives dimmed by the transmitters
             // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
@@ -156,14 +160,14 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                 const Color through =
                     state.shadows ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
                                   : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
-                if (state.shadows) state.shadows->remember(slots, li, hint);
+                if (state.shadows) slots.remember(hint);
                 if (through.isBlack() || !facing) continue;
                 arriving = saturated(arriving * saturated(through));
             } else {
                 const bool blocked =
                     state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
                                   : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
-                if (state.shadows) state.shadows->remember(slots, li, hint);
+                if (state.shadows) slots.remember(hint);
                 if (blocked || !facing) continue;
             }
             result += lambert(diffuse, arriving, n, l);

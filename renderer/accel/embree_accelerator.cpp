@@ -366,27 +366,35 @@ void EmbreeAccelerator::initContext(EmbreeQueryContext& ctx, const Ray* ray, dou
     if (m_filter.active()) ctx.filter = &m_filter;
 }
 
-bool EmbreeAccelerator::blocksAsHinted(uint32_t entry, const Ray& ray, double tMin, double tMax,
-                                       Departure from) const {
-    if (entry >= m_user.entries.size()) return false;  // kNone, or not a user entry
+bool EmbreeAccelerator::answeredByHint(const Ray& ray, double tMin, double tMax, Departure from,
+                                       OcclusionHint& hint) const {
     // Only entries without a cut-out are named (occludedLane): for an opaque
     // feeler their exact test is the whole answer the callback would give. A
     // cut-out would bypass its filter here, so a hint naming one is ignored:
     // the walk asks the filter.
-    const EmbreeUserTable::Entry& e = m_user.entries[entry];
-    return !e.cutsOut && e.object != from.object &&
-           e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options);
+    const auto blocks = [&](uint32_t entry) {
+        if (entry >= m_user.entries.size()) return false;
+        const EmbreeUserTable::Entry& e = m_user.entries[entry];
+        return !e.cutsOut && e.object != from.object &&
+               e.shape->occluded(e.prim, ray, tMin, tMax, m_user.options);
+    };
+    if (blocks(hint.primitive)) return true;
+    if (hint.fallback != hint.primitive && blocks(hint.fallback)) {
+        hint.primitive = hint.fallback;
+        return true;
+    }
+    return false;
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Departure from,
                                  OcclusionHint& hint) const {
     RTCRay r;
     if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
-    if (blocksAsHinted(hint.primitive, ray, tMin, tMax, from)) return true;
-    if (hint.fallback != hint.primitive && blocksAsHinted(hint.fallback, ray, tMin, tMax, from)) {
-        hint.primitive = hint.fallback;
+    // Most feelers come without a guess (their neighbours were lit): they
+    // pay two comparisons, not the guesses' code (out of line).
+    if ((hint.primitive & hint.fallback) != OcclusionHint::kNone &&
+        answeredByHint(ray, tMin, tMax, from, hint))
         return true;
-    }
     EmbreeQueryContext ctx;
     initContext(ctx, &ray, tMin, tMax, from);
     rtcOccluded1(m_scene.get(), &ctx.rtc, &r);

@@ -105,10 +105,10 @@ public:
                      Departure from = {}) const;
 
 private:
-    /// Whether user entry `entry` (anything else: false) provably blocks the
-    /// feeler, by its exact test (see the hinted occluded()).
-    bool blocksAsHinted(uint32_t entry, const Ray& ray, double tMin, double tMax,
-                        Departure from) const;
+    /// Whether a guess of the hint provably blocks the feeler, by its exact
+    /// test (see the hinted occluded()); names it in hint.primitive.
+    [[gnu::noinline]] bool answeredByHint(const Ray& ray, double tMin, double tMax, Departure from,
+                                          OcclusionHint& hint) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 

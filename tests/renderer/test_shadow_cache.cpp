@@ -45,31 +45,31 @@ TEST_CASE("shadow cache: a feeler's guesses are its receiver's last occluders, a
     ShadowCache cache;
     cache.prepare(10, 3, 5);  // objects, lights, depths 0..5
     const auto at = [&](uint32_t object, int depth) { return cache.receiver(object, depth); };
-    CHECK(same(cache.hint(at(4, 2), 1), kNone, kNone));
+    CHECK(same(cache.slots(at(4, 2), 1).hint(), kNone, kNone));
 
-    cache.remember(at(4, 2), 1, answered(7));
-    CHECK(same(cache.hint(at(4, 2), 1), 7, 7));
-    CHECK(same(cache.hint(at(4, 3), 1), kNone, 7));      // another depth: the fallback only
-    CHECK(same(cache.hint(at(4, 2), 0), kNone, kNone));  // another light
-    CHECK(same(cache.hint(at(4, 2), 2), kNone, kNone));
-    CHECK(same(cache.hint(at(5, 2), 1), kNone, kNone));  // another receiver
-    CHECK(same(cache.hint(at(3, 2), 1), kNone, kNone));
+    cache.slots(at(4, 2), 1).remember(answered(7));
+    CHECK(same(cache.slots(at(4, 2), 1).hint(), 7, 7));
+    CHECK(same(cache.slots(at(4, 3), 1).hint(), kNone, 7));      // another depth: the fallback only
+    CHECK(same(cache.slots(at(4, 2), 0).hint(), kNone, kNone));  // another light
+    CHECK(same(cache.slots(at(4, 2), 2).hint(), kNone, kNone));
+    CHECK(same(cache.slots(at(5, 2), 1).hint(), kNone, kNone));  // another receiver
+    CHECK(same(cache.slots(at(3, 2), 1).hint(), kNone, kNone));
 
-    cache.remember(at(4, 3), 1, answered(9));
-    CHECK(same(cache.hint(at(4, 2), 1), 7, 9));  // its own depth's, then the latest at any
-    CHECK(same(cache.hint(at(4, 3), 1), 9, 9));
+    cache.slots(at(4, 3), 1).remember(answered(9));
+    CHECK(same(cache.slots(at(4, 2), 1).hint(), 7, 9));  // its own depth's, then the latest at any
+    CHECK(same(cache.slots(at(4, 3), 1).hint(), 9, 9));
 
     // A lit point forgets: its own slot and the receiver's.
-    cache.remember(at(4, 2), 1, answered(kNone));
-    CHECK(same(cache.hint(at(4, 2), 1), kNone, kNone));
-    CHECK(same(cache.hint(at(4, 3), 1), 9, kNone));
+    cache.slots(at(4, 2), 1).remember(answered(kNone));
+    CHECK(same(cache.slots(at(4, 2), 1).hint(), kNone, kNone));
+    CHECK(same(cache.slots(at(4, 3), 1).hint(), 9, kNone));
 
     // The same shape keeps the hints (prepare runs for every camera ray);
     // another one starts afresh.
     cache.prepare(10, 3, 5);
-    CHECK(same(cache.hint(at(4, 3), 1), 9, kNone));
+    CHECK(same(cache.slots(at(4, 3), 1).hint(), 9, kNone));
     cache.prepare(10, 2, 5);
-    CHECK(same(cache.hint(at(4, 3), 1), kNone, kNone));
+    CHECK(same(cache.slots(at(4, 3), 1).hint(), kNone, kNone));
 }
 
 TEST_CASE("shadow cache: its tables fit small scenes and stop at their caps for large ones") {
@@ -83,17 +83,25 @@ TEST_CASE("shadow cache: its tables fit small scenes and stop at their caps for 
     ShadowCache large;
     large.prepare(1000000, 4, 5);  // 24 M and 4 M wanted
     CHECK(large.slotCount() == ShadowCache::kDepthSlots + ShadowCache::kReceiverSlots);
-    // Receivers beyond the cap share slots: a shared slot is only a wrong
-    // guess (one test), never a wrong answer. Key (3640·6 + 5)·3 + 1 = 65,536
-    // shares slot 0 with receiver 0 at depth 0, light 0 (64 Ki slots).
+    ShadowCache odd;
+    odd.prepare(1000000, 3, 5);  // rows of 3: 16 Ki x 3 and 4 Ki x 3
+    CHECK(odd.slotCount() == 16384 * 3 + 4096 * 3);
+    ShadowCache many;
+    many.prepare(10, 100000, 5);  // more lights than slots: one row each
+    CHECK(many.slotCount() == 100000 + 100000);
+    // Receivers beyond the cap share rows: a shared slot is only a wrong
+    // guess (one test), never a wrong answer. With 3 lights the
+    // receiver-and-depth table has 16 Ki rows: key 2730 x 6 + 4 = 16,384
+    // shares row 0 with receiver 0 at depth 0.
     REQUIRE(ShadowCache::kDepthSlots == 65536);
     ShadowCache shared;
     shared.prepare(100000, 3, 5);
-    shared.remember(shared.receiver(0, 0), 0, answered(11));
-    CHECK(shared.hint(shared.receiver(3640, 5), 1).primitive == 11);
-    CHECK(shared.hint(shared.receiver(3640, 4), 1).primitive == kNone);
-    shared.remember(shared.receiver(99999, 5), 2, answered(12));  // the last key: in range
-    CHECK(shared.hint(shared.receiver(99999, 5), 2).primitive == 12);
+    shared.slots(shared.receiver(0, 0), 1).remember(answered(11));
+    CHECK(shared.slots(shared.receiver(2730, 4), 1).hint().primitive == 11);
+    CHECK(shared.slots(shared.receiver(2730, 4), 0).hint().primitive == kNone);
+    CHECK(shared.slots(shared.receiver(2730, 5), 1).hint().primitive == kNone);
+    shared.slots(shared.receiver(99999, 5), 2).remember(answered(12));  // the last key: in range
+    CHECK(shared.slots(shared.receiver(99999, 5), 2).hint().primitive == 12);
 }
 
 TEST_CASE("embree: any pair of guesses gives occluded()'s answer, and the fallback answers when the first does not block") {
