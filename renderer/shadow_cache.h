@@ -32,7 +32,8 @@ namespace raylab {
 class ShadowCache {
 public:
     /// Most slots of each table: 64 Ki x 4 bytes (the receiver-and-depth
-    /// table) and 16 Ki x 4 bytes (the receiver table) per worker. Rings'
+    /// table) and 16 Ki x 4 bytes (the receiver table) per worker, in rows
+    /// of one slot per light. Rings'
     /// 8,401 objects x 3 lights x 6 depths want 151 k: with 16 Ki and 4 Ki
     /// the walks that find a blocker rose from 135 k to 150 k.
     static constexpr size_t kDepthSlots = size_t(1) << 16;
@@ -48,10 +49,10 @@ public:
         m_maxDepth = maxDepth;
         m_depths = size_t(maxDepth) + 1;
         // A row of `lights` slots per key (receiver and depth; receiver).
-        m_depthKeys = keys(objects * m_depths, kDepthSlots / std::max<size_t>(lights, 1));
-        m_receiverKeys = keys(objects, kReceiverSlots / std::max<size_t>(lights, 1));
-        m_byDepth.assign(m_depthKeys * lights, OcclusionHint::kNone);
-        m_byReceiver.assign(m_receiverKeys * lights, OcclusionHint::kNone);
+        m_depthRows = rows(objects * m_depths, kDepthSlots / std::max<size_t>(lights, 1));
+        m_receiverRows = rows(objects, kReceiverSlots / std::max<size_t>(lights, 1));
+        m_byDepth.assign(m_depthRows * lights, OcclusionHint::kNone);
+        m_byReceiver.assign(m_receiverRows * lights, OcclusionHint::kNone);
     }
 
     /// The slot rows of receiver `object` at ray depth `depth` (after
@@ -61,11 +62,9 @@ public:
         uint32_t* anyDepth;
     };
     Receiver receiver(uint32_t object, int depth) {
-        // Consecutive objects get consecutive rows, so the receivers a tile
-        // sees (mostly neighbours in the scene's order) rarely share one.
-        const size_t depthKey = (size_t(object) * m_depths + size_t(depth)) & (m_depthKeys - 1);
-        const size_t receiverKey = size_t(object) & (m_receiverKeys - 1);
-        return {m_byDepth.data() + depthKey * m_lights, m_byReceiver.data() + receiverKey * m_lights};
+        const size_t depthRow = row(size_t(object) * m_depths + size_t(depth), m_depthRows);
+        const size_t receiverRow = row(object, m_receiverRows);
+        return {m_byDepth.data() + depthRow * m_lights, m_byReceiver.data() + receiverRow * m_lights};
     }
 
     /// The two slots of a feeler from `r` to `light`: its guesses, and where
@@ -91,16 +90,16 @@ public:
     size_t slotCount() const { return m_byDepth.size() + m_byReceiver.size(); }
 
 private:
-    /// Keys of a table: a power of two, at least `wanted` up to `most` (the
-    /// largest power of two not above it; at least 1).
-    static size_t keys(size_t wanted, size_t most) {
-        size_t n = 1;
-        while (n < wanted && 2 * n <= most) n *= 2;
-        return n;
-    }
+    /// Rows of a table: one per key, at most `most` (at least 1).
+    static size_t rows(size_t keys, size_t most) { return std::max<size_t>(std::min(keys, most), 1); }
+    /// A key's row: keys wrap around the rows, so consecutive objects get
+    /// consecutive rows and the receivers a tile sees (mostly neighbours in
+    /// the scene's order) rarely share one. The division is paid once per hit
+    /// and only in a scene with more keys than rows.
+    static size_t row(size_t key, size_t rows) { return key < rows ? key : key % rows; }
 
     size_t m_objects = 0, m_lights = 0, m_depths = 0;
-    size_t m_depthKeys = 1, m_receiverKeys = 1;
+    size_t m_depthRows = 1, m_receiverRows = 1;
     int m_maxDepth = -1;
     std::vector<uint32_t> m_byDepth;     ///< primitive per (object and depth, light)
     std::vector<uint32_t> m_byReceiver;  ///< primitive per (object, light)

@@ -74,32 +74,32 @@ TEST_CASE("shadow cache: a feeler's guesses are its receiver's last occluders, a
 
 TEST_CASE("shadow cache: its tables fit small scenes and stop at their caps for large ones") {
     ShadowCache small;
-    small.prepare(3, 2, 1);  // 3 x 2 x 2 = 12 -> 16 slots; 3 x 2 = 6 -> 8
-    CHECK(small.slotCount() == 16 + 8);
+    small.prepare(3, 2, 1);  // rows of 2 lights: 3 x 2 receivers at a depth, 3 receivers
+    CHECK(small.slotCount() == 6 * 2 + 3 * 2);
     ShadowCache one;
     one.prepare(1, 1, 0);
     CHECK(one.slotCount() == 1 + 1);
 
     ShadowCache large;
-    large.prepare(1000000, 4, 5);  // 24 M and 4 M wanted
+    large.prepare(1000000, 4, 5);  // 24 M and 4 M slots wanted
     CHECK(large.slotCount() == ShadowCache::kDepthSlots + ShadowCache::kReceiverSlots);
     ShadowCache odd;
-    odd.prepare(1000000, 3, 5);  // rows of 3: 16 Ki x 3 and 4 Ki x 3
-    CHECK(odd.slotCount() == 16384 * 3 + 4096 * 3);
+    odd.prepare(1000000, 3, 5);  // rows of 3: 21,845 and 5,461 rows
+    CHECK(odd.slotCount() == 21845 * 3 + 5461 * 3);
     ShadowCache many;
     many.prepare(10, 100000, 5);  // more lights than slots: one row each
     CHECK(many.slotCount() == 100000 + 100000);
     // Receivers beyond the cap share rows: a shared slot is only a wrong
     // guess (one test), never a wrong answer. With 3 lights the
-    // receiver-and-depth table has 16 Ki rows: key 2730 x 6 + 4 = 16,384
-    // shares row 0 with receiver 0 at depth 0.
+    // receiver-and-depth table has 21,845 rows: key 3640 x 6 + 5 = 21,845
+    // wraps to row 0, receiver 0's at depth 0.
     REQUIRE(ShadowCache::kDepthSlots == 65536);
     ShadowCache shared;
     shared.prepare(100000, 3, 5);
     shared.slots(shared.receiver(0, 0), 1).remember(answered(11));
-    CHECK(shared.slots(shared.receiver(2730, 4), 1).hint().primitive == 11);
-    CHECK(shared.slots(shared.receiver(2730, 4), 0).hint().primitive == kNone);
-    CHECK(shared.slots(shared.receiver(2730, 5), 1).hint().primitive == kNone);
+    CHECK(shared.slots(shared.receiver(3640, 5), 1).hint().primitive == 11);
+    CHECK(shared.slots(shared.receiver(3640, 5), 0).hint().primitive == kNone);
+    CHECK(shared.slots(shared.receiver(3640, 4), 1).hint().primitive == kNone);
     shared.slots(shared.receiver(99999, 5), 2).remember(answered(12));  // the last key: in range
     CHECK(shared.slots(shared.receiver(99999, 5), 2).hint().primitive == 12);
 }
