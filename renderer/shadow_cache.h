@@ -11,14 +11,13 @@
 // Two slots name a guess for a feeler: the receiver's (its object, the light
 // and the ray depth) and, as the fallback, the receiver's at any depth. Keyed
 // by depth alone (one slot per light and depth, as this cache was first),
-// reflections that alternate between surfaces evict each other's occluders:
-// 512x512 `--spd`, feelers the cache did not answer and Embree found
-// blocked: gears 455 k -> 175 k, balls 106 k -> 68 k, rings 235 k -> 135 k
-// (docs/benchmarks.md).
+// reflections that alternate between surfaces evicted each other's
+// occluders: gears left 2.6 times as many blocked feelers to a walk
+// (docs/benchmarks.md, session 2026-12-06 05:20).
 //
-// The slots are direct-mapped tables of a fixed size: a scene with more
-// receivers than slots shares them (a wrong guess costs one test), and the
-// cache's memory stays small for any scene (fresh pages are dear).
+// The slots are direct-mapped tables of at most a fixed size: a scene with
+// more receivers than slots shares them (a wrong guess costs one test), and
+// the cache's memory stays small for any scene (fresh pages are dear).
 
 #include <algorithm>
 #include <cstddef>
@@ -32,24 +31,23 @@ namespace raylab {
 class ShadowCache {
 public:
     /// Most slots of each table: 64 Ki x 4 bytes (the receiver-and-depth
-    /// table) and 16 Ki x 4 bytes (the receiver table) per worker, in rows
-    /// of one slot per light. Rings'
-    /// 8,401 objects x 3 lights x 6 depths want 151 k: with 16 Ki and 4 Ki
-    /// the walks that find a blocker rose from 135 k to 150 k.
+    /// table) and 16 Ki x 4 bytes (the receiver table) per worker, in rows of
+    /// one slot per light. Smaller caps left more walks on large scenes
+    /// (rings: 135 k -> 150 k with 16 Ki and 4 Ki).
     static constexpr size_t kDepthSlots = size_t(1) << 16;
     static constexpr size_t kReceiverSlots = size_t(1) << 14;
 
-    /// Room for `objects` receivers, `lights` lights and depths 0..maxDepth
-    /// (keeps the hints when the shape is already right: called for every
-    /// camera ray).
+    /// Room for `objects` receivers, `lights` lights and ray depths
+    /// 1..maxDepth (a camera ray's hit is at depth 1). Keeps the hints when
+    /// the shape is already right: called for every camera ray.
     void prepare(size_t objects, size_t lights, int maxDepth) {
-        if (objects == m_objects && lights == m_lights && maxDepth == m_maxDepth) return;
+        const size_t depths = size_t(std::max(maxDepth, 1));
+        if (objects == m_objects && lights == m_lights && depths == m_depths) return;
         m_objects = objects;
         m_lights = lights;
-        m_maxDepth = maxDepth;
-        m_depths = size_t(maxDepth) + 1;
+        m_depths = depths;
         // A row of `lights` slots per key (receiver and depth; receiver).
-        m_depthRows = rows(objects * m_depths, kDepthSlots / std::max<size_t>(lights, 1));
+        m_depthRows = rows(objects * depths, kDepthSlots / std::max<size_t>(lights, 1));
         m_receiverRows = rows(objects, kReceiverSlots / std::max<size_t>(lights, 1));
         m_byDepth.assign(m_depthRows * lights, OcclusionHint::kNone);
         m_byReceiver.assign(m_receiverRows * lights, OcclusionHint::kNone);
@@ -62,7 +60,8 @@ public:
         uint32_t* anyDepth;
     };
     Receiver receiver(uint32_t object, int depth) {
-        const size_t depthRow = row(size_t(object) * m_depths + size_t(depth), m_depthRows);
+        // A depth outside 1..maxDepth only shares another key's row.
+        const size_t depthRow = row(size_t(object) * m_depths + size_t(depth - 1), m_depthRows);
         const size_t receiverRow = row(object, m_receiverRows);
         return {m_byDepth.data() + depthRow * m_lights, m_byReceiver.data() + receiverRow * m_lights};
     }
@@ -100,7 +99,6 @@ private:
 
     size_t m_objects = 0, m_lights = 0, m_depths = 0;
     size_t m_depthRows = 1, m_receiverRows = 1;
-    int m_maxDepth = -1;
     std::vector<uint32_t> m_byDepth;     ///< primitive per (object and depth, light)
     std::vector<uint32_t> m_byReceiver;  ///< primitive per (object, light)
 };

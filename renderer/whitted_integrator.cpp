@@ -40,7 +40,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // The general kernel traces every ray type at every hit, zero weights
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
-    m_shadowHints = accel.usesOcclusionHints(m_effects.filteredShadows);
+    m_shadowHints = m_effects.has(kShadows) && accel.usesOcclusionHints(m_effects.filteredShadows);
     // One instantiation of trace<E> per effect combination, chosen once here.
     constexpr unsigned kKernels = 2 * kTextures;
     static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());

@@ -22,7 +22,9 @@ namespace raylab {
 /// light and depth). Opaque: its meaning is the accelerator's own.
 struct OcclusionHint {
     static constexpr uint32_t kNone = 0xffffffffu;
-    /// Asked first; on return the occluder found, or kNone when none was.
+    /// Asked first; on return the occluder found, or kNone when none was
+    /// (left as it was by an accelerator that takes no hint, and for
+    /// filtered feelers through a surface filter).
     uint32_t primitive = kNone;
     /// Asked second, when it differs and `primitive` does not block.
     uint32_t fallback = kNone;

@@ -389,7 +389,10 @@ bool EmbreeAccelerator::answeredByHint(const Ray& ray, double tMin, double tMax,
 bool EmbreeAccelerator::occluded(const Ray& ray, double tMin, double tMax, Departure from,
                                  OcclusionHint& hint) const {
     RTCRay r;
-    if (!toEmbreeRay(ray, tMin, tMax, r)) return false;
+    if (!toEmbreeRay(ray, tMin, tMax, r)) {
+        hint.primitive = OcclusionHint::kNone;  // an untraceable feeler is lit
+        return false;
+    }
     // Most feelers come without a guess (their neighbours were lit): they
     // pay two comparisons, not the guesses' code (out of line).
     if ((hint.primitive & hint.fallback) != OcclusionHint::kNone &&

@@ -1,7 +1,9 @@
 #pragma once
 // Shared by the tests that the shadow cache changes no pixel (cut-outs,
-// filtered and opaque shadows through glass): every pixel centre traced with
-// and without a cache, through both accelerators.
+// filtered and opaque shadows through glass, a mirror): every pixel centre
+// traced with and without a cache, through both accelerators. Only Embree
+// with opaque feelers (or filtered ones without a surface filter) keeps a
+// cache (Accelerator::usesOcclusionHints); elsewhere both paths are the same.
 
 #include <doctest/doctest.h>
 

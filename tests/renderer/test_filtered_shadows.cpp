@@ -235,9 +235,9 @@ TEST_CASE("filtered shadows: the shadow cache changes no feeler's answer") {
 
     // Pixels: with the cache carried from pixel to pixel (as a render's
     // worker carries it) and without, through both accelerators. (Filtered
-    // feelers ignore the hint today, so the cached and uncached paths are the
-    // same code: these checks guard a future use of the hint; the naive vs
-    // Embree comparison is the independent path.)
+    // feelers through a surface filter take no hint today, and the
+    // integrator then keeps no cache, so the cached and uncached paths are
+    // the same code; the naive vs Embree comparison is the independent path.)
     {
         const std::vector<Color> pixels = pixelsInBothAccelerators(
             s, naive, embree, options, effects, s.image.width, s.image.height);

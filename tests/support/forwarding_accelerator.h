@@ -3,7 +3,9 @@
 // one query (a test derives and overrides it) or that need the same answers
 // asked one ray at a time: packets are not forwarded, so intersectPacket is
 // Accelerator's ray-by-ray default and tracesPackets() is false.
-// Header-only, included as "support/forwarding_accelerator.h".
+// Header-only, included as "support/forwarding_accelerator.h". A subclass
+// that changes occluded() or transmittance() overrides the hinted forms too:
+// the integrator asks those whenever the inner accelerator uses hints.
 
 #include <optional>
 #include <string>
