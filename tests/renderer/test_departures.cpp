@@ -22,6 +22,7 @@
 #include "renderer/effects.h"
 #include "renderer/render.h"
 #include "renderer/render_setup.h"
+#include "support/forwarding_shape.h"
 
 using namespace raylab;
 using accel_test::shapeObject;
@@ -69,29 +70,15 @@ std::vector<std::unique_ptr<Accelerator>> both(const Scene& s, const AccelOption
 
 /// A shape that answers as `inner` but claims, wrongly for a ball, that no
 /// ray leaving it can meet it again.
-class ClaimsPlanar final : public Shape {
+class ClaimsPlanar final : public test::ForwardingShape {
 public:
     /// `inner` answers for both sides, as the glass ball does (the sidedness
     /// everyKind() sets is the wrapper's, which no query reads).
-    explicit ClaimsPlanar(std::unique_ptr<Shape> inner) : m_inner(std::move(inner)) {
-        m_inner->setSidedness(Sidedness::Both);
-    }
-    uint32_t primitiveCount() const override { return 1; }
-    Bounds3 bounds(uint32_t prim) const override { return m_inner->bounds(prim); }
-    Bounds3 bounds() const override { return m_inner->bounds(); }
-    std::optional<ShapeHit> intersect(uint32_t prim, const Ray& ray, double tMin, double tMax,
-                                      const IntersectOptions& opt) const override {
-        return m_inner->intersect(prim, ray, tMin, tMax, opt);
-    }
-    SurfaceGeometry surfaceAt(uint32_t prim, const Ray& ray, const ShapeHit& hit,
-                              const IntersectOptions& opt, SurfaceDetail detail) const override {
-        return m_inner->surfaceAt(prim, ray, hit, opt, detail);
+    explicit ClaimsPlanar(std::unique_ptr<Shape> inner) : ForwardingShape(std::move(inner)) {
+        this->inner().setSidedness(Sidedness::Both);
     }
     const char* kind() const override { return "ball claiming to be flat"; }
     Revisit revisit() const override { return Revisit::None; }
-
-private:
-    std::unique_ptr<Shape> m_inner;
 };
 
 /// Every analytic kind under two point lights and a directional one: a glass

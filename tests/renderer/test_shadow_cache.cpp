@@ -25,6 +25,7 @@
 #include "renderer/shadow_cache_pixels.h"
 #include "renderer/whitted_integrator.h"
 #include "support/forwarding_accelerator.h"
+#include "support/forwarding_shape.h"
 
 using namespace raylab;
 
@@ -170,24 +171,12 @@ namespace {
 /// A unit ball whose box Embree is told lies far away: no walk finds it, so
 /// only a hint can name it (a broken Shape contract, on purpose: it shows
 /// which guesses the accelerator asked).
-class HiddenBall final : public Shape {
+class HiddenBall final : public test::ForwardingShape {
 public:
-    explicit HiddenBall(const Vec3& centre) : m_ball(makeSphere(centre, 1)) {}
-    uint32_t primitiveCount() const override { return 1; }
+    explicit HiddenBall(const Vec3& centre) : ForwardingShape(makeSphere(centre, 1)) {}
     Bounds3 bounds(uint32_t) const override { return bounds(); }
     Bounds3 bounds() const override { return {{1000, 1000, 1000}, {1001, 1001, 1001}}; }
-    std::optional<ShapeHit> intersect(uint32_t prim, const Ray& ray, double tMin, double tMax,
-                                      const IntersectOptions& opt) const override {
-        return m_ball->intersect(prim, ray, tMin, tMax, opt);
-    }
-    SurfaceGeometry surfaceAt(uint32_t prim, const Ray& ray, const ShapeHit& hit,
-                              const IntersectOptions& opt, SurfaceDetail detail) const override {
-        return m_ball->surfaceAt(prim, ray, hit, opt, detail);
-    }
     const char* kind() const override { return "hidden ball"; }
-
-private:
-    std::unique_ptr<Shape> m_ball;
 };
 
 }  // namespace
