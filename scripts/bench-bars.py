@@ -68,7 +68,7 @@ def parse_limit(report):
 def parse_threads(text):
     """bench-threads.py: (wall speed-up of the last thread count, per-round median,
     write ÷ render at that count in %), for the first binary."""
-    rows = re.findall(r"^\| \S+ \| (\d+) \| [\d.]+ \| [\d.]+ \| [\d.]+ \| [\d.]+ \| ([\d.]+)× \| (\d+)% \|",
+    rows = re.findall(r"^\| \S+ \| (\d+) \| [\d.]+ \| [\d.]+ \| [\d.]+ \| [\d.]+ \| [\d.]+ \| ([\d.]+)× \| (\d+)% \|",
                       text, re.M)
     per_round = re.search(r"wall speed-up round by round: median ([\d.]+)×", text)
     if not rows:

@@ -16,7 +16,13 @@ part of the render), the speed-up of the wall time against the
 first thread count, and the write as a share of the render; then the same
 speed-up round by round (each round's first-count run against its N-thread
 run), median and range: less exposed to the machine's drift than the ratio of
-two medians, and its range shows how far one run can be trusted. --nice N: each
+two medians, and its range shows how far one run can be trusted. The "rest"
+column is the wall time outside the render and the write (start-up, loading,
+the build, the buffers, the output's commit, exit; each round's timed run less
+its --stats run's phases): the serial part of the process that more threads
+do not shorten. A last line per thread count gives the time the N-thread
+process would have to lose to reach --target (default 1.8, bar 3) against the
+first thread count's wall time, with its render and write as they scale. --nice N: each
 command in a session of its own at niceness N (see scripts/bench-povray.py:
 plain nice does not help against other sessions' jobs), set from this script
 right after the spawn so that the spawn stays a cheap vfork. A benchmark, not a
@@ -73,6 +79,7 @@ def main():
                     help="comma-separated binaries (each timed in the same rounds)")
     ap.add_argument("--nice", type=int)
     ap.add_argument("--output", default="exr", help="the output's extension (exr, png, ...)")
+    ap.add_argument("--target", type=float, default=1.8, help="the speed-up the last lines measure against")
     ap.add_argument("render", nargs="+", help="SCENE and render flags (after --)")
     args = ap.parse_args()
     global NICE
@@ -109,16 +116,17 @@ def main():
           % (" ".join(args.render), args.output, args.repeats, *load_before, *load_after,
              "; niceness %d" % NICE if NICE is not None else ""))
     print()
-    print("| binary | threads | wall s | CPU s | render s | write s | wall speed-up | write ÷ render |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    print("| binary | threads | wall s | CPU s | render s | write s | rest s | wall speed-up | write ÷ render |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for b in binaries:
         base = None
         for t in threads:
             s = samples[(b, t)]
             wall, cpu, ren, wr = (med(x[i] for x in s) for i in range(4))
+            rest = med(x[0] - x[2] - x[3] for x in s)
             base = base or wall
-            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f× | %.0f%% |"
-                  % (b, t, wall, cpu, ren, wr, base / wall, 100 * wr / ren))
+            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f× | %.0f%% |"
+                  % (b, t, wall, cpu, ren, wr, rest, base / wall, 100 * wr / ren))
     print()
     for b in binaries:
         first = samples[(b, threads[0])]
@@ -126,6 +134,14 @@ def main():
             ratios = sorted(f[0] / x[0] for f, x in zip(first, samples[(b, t)]))
             print("%s, %d -> %d threads, wall speed-up round by round: median %.2f× (%.2f–%.2f×)"
                   % (b, threads[0], t, med(ratios), ratios[0], ratios[-1]))
+            # What --target asks of the N-thread process, with the first
+            # count's wall time as measured.
+            base = med(x[0] for x in first)
+            wall = med(x[0] for x in samples[(b, t)])
+            goal = base / args.target
+            print("%s, %d threads: %.2f× needs the process within %.1f ms; it takes %.1f ms (%s)"
+                  % (b, t, args.target, 1e3 * goal, 1e3 * wall,
+                     "met" if wall <= goal else "%.1f ms too long" % (1e3 * (wall - goal))))
     return 0
 
 
