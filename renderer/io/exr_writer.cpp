@@ -8,14 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include <Imath/half.h>
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfIntAttribute.h>
-#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfThreading.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_invoke.h>
@@ -24,7 +20,7 @@
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_planes.h"
-#include "renderer/io/exr_string_attribute.h"
+#include "renderer/io/exr_header.h"
 #include "renderer/io/exr_zip_file.h"
 #include "renderer/thread_arena.h"
 
@@ -32,7 +28,6 @@ namespace raylab {
 
 namespace {
 
-using Imath::half;
 
 /// Checks that an AOV vector is either absent (empty) or holds `expected` values.
 void checkLayerSize(const std::string& path, const char* name, size_t size, size_t expected) {
@@ -43,28 +38,42 @@ void checkLayerSize(const std::string& path, const char* name, size_t size, size
                              std::to_string(expected));
 }
 
-Imath::M44f toM44f(const Matrix44& m) {
-    Imath::M44f r;
+/// A camera matrix as the file's m44f attribute holds it.
+void setMatrix(ExrHeader& header, const std::string& name, const Matrix44& m) {
+    float f[4][4];
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) r[i][j] = float(m[size_t(i)][size_t(j)]);
-    return r;
+        for (int j = 0; j < 4; ++j) f[i][j] = float(m[size_t(i)][size_t(j)]);
+    header.setM44f(name, f);
 }
 
-Imf::Compression toImf(ExrCompression c) {
+ExrCompressionId compressionId(ExrCompression c) {
     switch (c) {
-        case ExrCompression::None: return Imf::NO_COMPRESSION;
-        case ExrCompression::Rle: return Imf::RLE_COMPRESSION;
-        case ExrCompression::Zips: return Imf::ZIPS_COMPRESSION;
-        case ExrCompression::Zip: return Imf::ZIP_COMPRESSION;
-        case ExrCompression::Piz: return Imf::PIZ_COMPRESSION;
+        case ExrCompression::None: return ExrCompressionId::None;
+        case ExrCompression::Rle: return ExrCompressionId::Rle;
+        case ExrCompression::Zips: return ExrCompressionId::Zips;
+        case ExrCompression::Zip: return ExrCompressionId::Zip;
+        case ExrCompression::Piz: return ExrCompressionId::Piz;
     }
-    return Imf::ZIP_COMPRESSION;
+    return ExrCompressionId::Zip;
 }
 
 /// The film's pixels in full-image coordinates.
-Imath::Box2i exrDataWindow(const Film& film) {
-    return Imath::Box2i({film.originX, film.originY},
-                        {film.originX + film.width - 1, film.originY + film.height - 1});
+ExrBox exrDataWindow(const Film& film) {
+    return {film.originX, film.originY, film.originX + film.width - 1,
+            film.originY + film.height - 1};
+}
+
+/// OpenEXR's header for the same bytes: the compressions raylab does not
+/// write itself go through Imf::OutputFile, from the one ExrHeader.
+Imf::Header imfHeaderOf(const ExrHeader& header) {
+    std::string bytes;
+    header.appendTo(bytes);
+    Imf::StdISStream is;
+    is.str(bytes);
+    Imf::Header out;
+    int version = 2 | (header.usesLongNames() ? 0x400 : 0);
+    out.readFrom(is, version);
+    return out;
 }
 
 /// The planes of ExrPlanes a channel can come from.
@@ -74,7 +83,7 @@ enum class Plane { RgbaF, RgbaH, Z, Distance, Normal, Albedo, ObjectId, Crypto }
 /// plane `plane` holds per pixel.
 struct FilmChannel {
     std::string name;
-    Imf::PixelType type;
+    ExrPixelType type;
     Plane plane;
     int component;
     int components;
@@ -168,56 +177,53 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     }
     const int matteRanks = mattes.ranks;
     // A crop render is the data window inside the full image's display window.
-    const Imath::Box2i dataWindow = exrDataWindow(film);
-    Imf::Header header(Imath::Box2i({0, 0}, {film.displayWidth() - 1, film.displayHeight() - 1}),
-                       dataWindow);
-    header.compression() = toImf(opts.compression);
-    if (!opts.software.empty()) header.insert("software", ExrStringAttribute(opts.software));
+    const ExrBox dataWindow = exrDataWindow(film);
+    ExrHeader header({0, 0, film.displayWidth() - 1, film.displayHeight() - 1}, dataWindow);
+    header.setCompression(compressionId(opts.compression));
+    if (!opts.software.empty()) header.setString("software", opts.software);
     if (opts.camera) {
-        header.insert("worldToCamera", Imf::M44fAttribute(toM44f(opts.camera->worldToCamera)));
-        header.insert("worldToNDC", Imf::M44fAttribute(toM44f(opts.camera->worldToNDC)));
+        setMatrix(header, "worldToCamera", opts.camera->worldToCamera);
+        setMatrix(header, "worldToNDC", opts.camera->worldToNDC);
     }
     const std::string cryptoPrefix = "cryptomatte/" + cryptomatteLayerKey(kCryptoObjectLayer) + "/";
-    header.insert(cryptoPrefix + "name", ExrStringAttribute(kCryptoObjectLayer));
-    header.insert(cryptoPrefix + "hash", ExrStringAttribute("MurmurHash3_32"));
-    header.insert(cryptoPrefix + "conversion", ExrStringAttribute("uint32_to_float32"));
-    header.insert(cryptoPrefix + "manifest", ExrStringAttribute(manifest));
-    if (!opts.settings.empty())
-        header.insert("raylab/settings", ExrStringAttribute(opts.settings));
-    if (!opts.alpha.empty()) header.insert("raylab/alpha", ExrStringAttribute(opts.alpha));
-    header.insert("raylab/spp", Imf::IntAttribute(opts.spp));
-    header.insert("raylab/maxDepth", Imf::IntAttribute(opts.maxDepth));
-    if (!opts.scenePath.empty())
-        header.insert("raylab/scene", ExrStringAttribute(opts.scenePath));
-    if (!opts.accel.empty()) header.insert("raylab/accel", ExrStringAttribute(opts.accel));
-    if (opts.frame != 0) header.insert("raylab/frame", Imf::IntAttribute(opts.frame));
+    header.setString(cryptoPrefix + "name", kCryptoObjectLayer);
+    header.setString(cryptoPrefix + "hash", "MurmurHash3_32");
+    header.setString(cryptoPrefix + "conversion", "uint32_to_float32");
+    header.setString(cryptoPrefix + "manifest", manifest);
+    if (!opts.settings.empty()) header.setString("raylab/settings", opts.settings);
+    if (!opts.alpha.empty()) header.setString("raylab/alpha", opts.alpha);
+    header.setInt("raylab/spp", opts.spp);
+    header.setInt("raylab/maxDepth", opts.maxDepth);
+    if (!opts.scenePath.empty()) header.setString("raylab/scene", opts.scenePath);
+    if (!opts.accel.empty()) header.setString("raylab/accel", opts.accel);
+    if (opts.frame != 0) header.setInt("raylab/frame", opts.frame);
 
     // Every channel and the plane it comes from, interleaved layers with
     // strides (the Film's layout).
-    const Imf::PixelType rgbaType = opts.floatPixels ? Imf::FLOAT : Imf::HALF;
+    const ExrPixelType rgbaType = opts.floatPixels ? ExrPixelType::Float : ExrPixelType::Half;
     const Plane rgbaPlane = opts.floatPixels ? Plane::RgbaF : Plane::RgbaH;
     std::vector<FilmChannel> layout;
     for (const char* c : {"R", "G", "B", "A"})
         layout.push_back({c, rgbaType, rgbaPlane, int(layout.size()), 4});
-    layout.push_back({"Z", Imf::FLOAT, Plane::Z, 0, 1});
-    layout.push_back({"distance", Imf::FLOAT, Plane::Distance, 0, 1});
+    layout.push_back({"Z", ExrPixelType::Float, Plane::Z, 0, 1});
+    layout.push_back({"distance", ExrPixelType::Float, Plane::Distance, 0, 1});
     const char* normalNames[3] = {"N.X", "N.Y", "N.Z"};
     const char* albedoNames[3] = {"albedo.R", "albedo.G", "albedo.B"};
     for (int c = 0; c < 3; ++c) {
-        layout.push_back({normalNames[c], Imf::FLOAT, Plane::Normal, c, 3});
-        layout.push_back({albedoNames[c], Imf::HALF, Plane::Albedo, c, 3});
+        layout.push_back({normalNames[c], ExrPixelType::Float, Plane::Normal, c, 3});
+        layout.push_back({albedoNames[c], ExrPixelType::Half, Plane::Albedo, c, 3});
     }
-    layout.push_back({"objectId", Imf::FLOAT, Plane::ObjectId, 0, 1});
+    layout.push_back({"objectId", ExrPixelType::Float, Plane::ObjectId, 0, 1});
     // CryptoObject0L.R/G/B/A = id and coverage of ranks 2L and 2L+1.
     for (int layer = 0; layer < matteRanks / 2; ++layer) {
         const std::string base = std::string(kCryptoObjectLayer) + (layer < 10 ? "0" : "") +
                                  std::to_string(layer) + ".";
         const char* components[4] = {"R", "G", "B", "A"};
         for (int c = 0; c < 4; ++c)
-            layout.push_back({base + components[c], Imf::FLOAT, Plane::Crypto, 4 * layer + c,
-                              2 * matteRanks});
+            layout.push_back({base + components[c], ExrPixelType::Float, Plane::Crypto,
+                              4 * layer + c, 2 * matteRanks});
     }
-    for (const FilmChannel& c : layout) header.channels().insert(c.name, Imf::Channel(c.type));
+    for (const FilmChannel& c : layout) header.addChannel(c.name, c.type);
 
     const size_t w = size_t(film.width);
     // ZIP and ZIPS (the default): raylab's own chunk writer, igzip on
@@ -226,9 +232,10 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     if (opts.compression == ExrCompression::Zip || opts.compression == ExrCompression::Zips) {
         // The channels in the file's order (the header's list is sorted by name).
         std::vector<const FilmChannel*> fileOrder;
-        for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
-            fileOrder.push_back(&*std::find_if(layout.begin(), layout.end(),
-                                               [&](const FilmChannel& c) { return c.name == it.name(); }));
+        for (const ExrHeader::Channel& channel : header.channels())
+            fileOrder.push_back(&*std::find_if(layout.begin(), layout.end(), [&](const FilmChannel& c) {
+                return c.name == channel.name;
+            }));
         // Each thread prepares the planes of the block it compresses, a line
         // at a time, in buffers it reuses (70 bytes per pixel of one line,
         // not of the frame).
@@ -257,11 +264,13 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     // Other compressions: the whole frame's planes, handed to OpenEXR.
     ExrPlanes planes;
     prepareExrFramePlanes(film, opts.floatPixels, mattes, planes, opts.threads);
+    const Imath::Box2i imfDataWindow({dataWindow.xMin, dataWindow.yMin},
+                                     {dataWindow.xMax, dataWindow.yMax});
     Imf::FrameBuffer fb;
     for (const FilmChannel& c : layout) {
         const ExrChannelSource s = sourceOf(c, planes, w);
-        fb.insert(c.name, Imf::Slice::Make(c.type, const_cast<char*>(s.base), dataWindow,
-                                           size_t(s.xStride), size_t(s.yStride)));
+        fb.insert(c.name, Imf::Slice::Make(Imf::PixelType(c.type), const_cast<char*>(s.base),
+                                           imfDataWindow, size_t(s.xStride), size_t(s.yStride)));
     }
     // The other compressions go through OpenEXR, on its worker pool.
     const int threads =
@@ -279,7 +288,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     writeFileAtomically(path, [&](const std::string& tmp) {
         // The OutputFile is closed (offset table written) when it goes out of
         // scope, before writeFileAtomically renames the file.
-        Imf::OutputFile file(tmp.c_str(), header, blocksInFlight);
+        Imf::OutputFile file(tmp.c_str(), imfHeaderOf(header), blocksInFlight);
         file.setFrameBuffer(fb);
         file.writePixels(film.height);  // every scan line of the data window
     }, group);

@@ -33,16 +33,6 @@ constexpr int32_t kExrMagic = 20000630;
 constexpr int32_t kExrVersion = 2;
 constexpr int32_t kLongNamesFlag = 0x400;  // a name of 32 characters or more
 
-/// OpenEXR's rule for the version field's long-names flag (ImfHeader.cpp).
-bool usesLongNames(const Imf::Header& header) {
-    for (auto it = header.begin(); it != header.end(); ++it)
-        if (std::strlen(it.name()) >= 32 || std::strlen(it.attribute().typeName()) >= 32)
-            return true;
-    for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
-        if (std::strlen(it.name()) >= 32) return true;
-    return false;
-}
-
 /// One thread's buffers: the raw block, its pre-pass, and igzip's hash
 /// tables, reused block after block (fresh zeroed pages for each block were
 /// 3% of balls' process: perf, clear_page). One huge-page mapping for all
@@ -205,8 +195,6 @@ void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out) {
     out[0] = raw[0];  // the first byte has no predecessor
 }
 
-size_t exrPixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
-
 void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int lines,
                     unsigned char* raw) {
     for (int k = 0; k < lines; ++k)
@@ -232,33 +220,24 @@ void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int
 
 namespace {
 
-/// The checked shape of a ZIP or ZIPS scan-line file.
+/// The shape of a ZIP or ZIPS scan-line file.
 struct BlockLayout {
-    Imath::Box2i dataWindow;
+    ExrBox dataWindow;
     int width = 0, linesPerBlock = 0, blocks = 0;
     size_t bytesPerLine = 0;
 };
 
-BlockLayout blockLayout(const Imf::Header& header) {
-    const Imf::Compression compression = header.compression();
-    if (compression != Imf::ZIP_COMPRESSION && compression != Imf::ZIPS_COMPRESSION)
-        throw std::logic_error("encodeExrZipFile: the header's compression is not ZIP or ZIPS");
-    if (header.hasTileDescription() || header.hasType())
-        throw std::logic_error("encodeExrZipFile: only single-part scan-line images");
-    header.sanityCheck();
+BlockLayout blockLayout(const ExrHeader& header) {
+    if (header.compression() != ExrCompressionId::Zip &&
+        header.compression() != ExrCompressionId::Zips)
+        throw std::logic_error("writeExrZipFile: the header's compression is not ZIP or ZIPS");
     BlockLayout l;
     l.dataWindow = header.dataWindow();
-    l.width = l.dataWindow.max.x - l.dataWindow.min.x + 1;
-    const int height = l.dataWindow.max.y - l.dataWindow.min.y + 1;
-    l.linesPerBlock = compression == Imf::ZIP_COMPRESSION ? 16 : 1;
-    l.blocks = (height + l.linesPerBlock - 1) / l.linesPerBlock;
-    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
-        const Imf::Channel& channel = it.channel();
-        if (channel.xSampling != 1 || channel.ySampling != 1)
-            throw std::logic_error(std::string("encodeExrZipFile: channel ") + it.name() +
-                                   " is subsampled");
-        l.bytesPerLine += exrPixelTypeSize(channel.type) * size_t(l.width);
-    }
+    l.width = l.dataWindow.width();
+    l.linesPerBlock = exrLinesPerBlock(header.compression());
+    l.blocks = (l.dataWindow.height() + l.linesPerBlock - 1) / l.linesPerBlock;
+    for (const ExrHeader::Channel& c : header.channels())
+        l.bytesPerLine += exrPixelTypeSize(c.type) * size_t(l.width);
     return l;
 }
 
@@ -266,18 +245,14 @@ BlockLayout blockLayout(const Imf::Header& header) {
 /// block (gathered raw lines -> pre-pass -> zlib stream, or raw when deflate
 /// does not shrink it, which OpenEXR's reader recognises by size) in
 /// scan-line order; the offset table last.
-void streamFile(const Imf::Header& header, const ExrBlockLines& lines, int threads,
+void streamFile(const ExrHeader& header, const ExrBlockLines& lines, int threads,
                 ByteSink& sink) {
     const BlockLayout layout = blockLayout(header);
-    const Imath::Box2i& dw = layout.dataWindow;
+    const ExrBox& dw = layout.dataWindow;
     std::string head;
     appendBytes(head, kExrMagic);
-    appendBytes(head, int32_t(kExrVersion | (usesLongNames(header) ? kLongNamesFlag : 0)));
-    {
-        Imf::StdOSStream os;
-        header.writeTo(os);
-        head += os.str();
-    }
+    appendBytes(head, int32_t(kExrVersion | (header.usesLongNames() ? kLongNamesFlag : 0)));
+    header.appendTo(head);
     sink.append(head.data(), head.size());
     // The table's place (zeros until the chunks' offsets are known).
     const uint64_t tableOffset = head.size();
@@ -318,8 +293,8 @@ void streamFile(const Imf::Header& header, const ExrBlockLines& lines, int threa
                     tbb::filter_mode::parallel,
                     [&](Chunk* c) {
                         Deflater& d = deflaters.local();
-                        const int y0 = dw.min.y + c->block * layout.linesPerBlock;
-                        const int y1 = std::min(y0 + layout.linesPerBlock, dw.max.y + 1);
+                        const int y0 = dw.yMin + c->block * layout.linesPerBlock;
+                        const int y1 = std::min(y0 + layout.linesPerBlock, dw.yMax + 1);
                         const size_t n = layout.bytesPerLine * size_t(y1 - y0);
                         d.reserve(maxBlockBytes);
                         lines(y0, y1, d.raw);
@@ -334,7 +309,7 @@ void streamFile(const Imf::Header& header, const ExrBlockLines& lines, int threa
                     }) &
                 tbb::make_filter<Chunk*, void>(tbb::filter_mode::serial_in_order, [&](Chunk* c) {
                     offsets[size_t(c->block)] = offset;
-                    int32_t head[2] = {dw.min.y + c->block * layout.linesPerBlock,
+                    int32_t head[2] = {dw.yMin + c->block * layout.linesPerBlock,
                                        int32_t(c->size)};
                     sink.append(head, sizeof head);
                     sink.append(c->bytes.get(), c->size);
@@ -346,28 +321,53 @@ void streamFile(const Imf::Header& header, const ExrBlockLines& lines, int threa
 
 }  // namespace
 
-void writeExrZipFile(const std::string& path, const Imf::Header& header,
+void writeExrZipFile(const std::string& path, const ExrHeader& header,
                      const ExrBlockLines& lines, int threads) {
     FileSink sink(path);
     streamFile(header, lines, threads, sink);
     sink.close();
 }
 
+ExrHeader exrHeaderOf(const Imf::Header& header) {
+    if (header.hasTileDescription() || header.hasType())
+        throw std::logic_error("exrHeaderOf: only single-part scan-line images");
+    header.sanityCheck();
+    const auto box = [](const Imath::Box2i& b) { return ExrBox{b.min.x, b.min.y, b.max.x, b.max.y}; };
+    ExrHeader out(box(header.displayWindow()), box(header.dataWindow()));
+    out.setCompression(ExrCompressionId(header.compression()));
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+        const Imf::Channel& channel = it.channel();
+        if (channel.xSampling != 1 || channel.ySampling != 1 || channel.pLinear)
+            throw std::logic_error(std::string("exrHeaderOf: channel ") + it.name() +
+                                   " is subsampled or perceptually linear");
+        out.addChannel(it.name(), ExrPixelType(channel.type));
+    }
+    // Every other attribute as its own bytes (what writeTo writes for it).
+    for (auto it = header.begin(); it != header.end(); ++it) {
+        if (std::strcmp(it.name(), "channels") == 0) continue;
+        Imf::StdOSStream os;
+        it.attribute().writeValueTo(os, kExrVersion);
+        out.setAttribute(it.name(), it.attribute().typeName(), os.str());
+    }
+    return out;
+}
+
 std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
                              int threads) {
-    const BlockLayout layout = blockLayout(header);
+    const ExrHeader own = exrHeaderOf(header);
+    const BlockLayout layout = blockLayout(own);
     // Channels in the file's order (the channel list is sorted by name), each
     // addressed from the data window's left edge of line 0.
     std::vector<ExrChannelSource> sources;
-    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
-        const Imf::Channel& channel = it.channel();
+    for (const ExrHeader::Channel& channel : own.channels()) {
         ExrChannelSource source;
         source.size = exrPixelTypeSize(channel.type);
-        if (const Imf::Slice* slice = frameBuffer.findSlice(it.name())) {
-            if (slice->type != channel.type || slice->xSampling != 1 || slice->ySampling != 1)
-                throw std::logic_error(std::string("encodeExrZipFile: the slice of channel ") +
-                                       it.name() + " has another type or sampling");
-            source.base = slice->base + ptrdiff_t(layout.dataWindow.min.x) * ptrdiff_t(slice->xStride);
+        if (const Imf::Slice* slice = frameBuffer.findSlice(channel.name)) {
+            if (ExrPixelType(slice->type) != channel.type || slice->xSampling != 1 ||
+                slice->ySampling != 1)
+                throw std::logic_error("encodeExrZipFile: the slice of channel " + channel.name +
+                                       " has another type or sampling");
+            source.base = slice->base + ptrdiff_t(layout.dataWindow.xMin) * ptrdiff_t(slice->xStride);
             source.xStride = ptrdiff_t(slice->xStride);
             source.yStride = ptrdiff_t(slice->yStride);
         }
@@ -381,7 +381,7 @@ std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& 
     };
     std::string file;
     StringSink sink(file);
-    streamFile(header, lines, threads, sink);
+    streamFile(own, lines, threads, sink);
     return file;
 }
 

@@ -6,7 +6,8 @@
 // a third of balls' instructions and three fifths of tetra's (docs/
 // benchmarks.md, "The EXR's deflate"). The file is the one OpenEXR writes
 // (OpenEXR 3.2 too left zlib, for libdeflate): the same magic,
-// version and header bytes (Imf::Header::writeTo), the same scan-line chunks
+// version and header bytes (ExrHeader, which writes Imf::Header::writeTo's
+// bytes: exr_header.h), the same scan-line chunks
 // of 16 (ZIP) or 1 (ZIPS) lines with OpenEXR's byte reordering and predictor,
 // a block stored raw when deflate does not make it smaller. Only the deflate
 // stream differs, so any zlib reads it and every decoded value is the same.
@@ -24,6 +25,8 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 
+#include "renderer/io/exr_header.h"
+
 namespace raylab {
 
 /// igzip's level for EXR ZIP blocks. On balls --spd's 18.4 MB of blocks (one
@@ -39,9 +42,6 @@ constexpr int kExrDeflateLevel = 2;
 /// replaced by its difference to the previous one plus 128, modulo 256.
 /// `out` holds n bytes and does not overlap `raw`.
 void exrZipPrepass(const unsigned char* raw, size_t n, unsigned char* out);
-
-/// Bytes per value of a channel of this type (HALF 2; FLOAT and UINT 4).
-size_t exrPixelTypeSize(Imf::PixelType type);
 
 /// Where one channel's values come from for a run of lines: value x of line
 /// k (k = 0 for the run's first line) at base + x * xStride + k * yStride.
@@ -63,8 +63,8 @@ void gatherExrLines(const std::vector<ExrChannelSource>& sources, int width, int
 /// with its own block.
 using ExrBlockLines = std::function<void(int y0, int y1, unsigned char* raw)>;
 
-/// \brief Writes an OpenEXR file of `header` (ZIP_COMPRESSION or
-/// ZIPS_COMPRESSION, scan lines, one part) to `path` (created or truncated;
+/// \brief Writes an OpenEXR file of `header` (ZIP or ZIPS compression,
+/// scan lines, one part) to `path` (created or truncated;
 /// the caller writes to a temporary, writeFileAtomically), its pixels from
 /// `lines`, compressing blocks on up to `threads` threads (0: all TBB may
 /// use).
@@ -74,13 +74,21 @@ using ExrBlockLines = std::function<void(int y0, int y1, unsigned char* raw)>;
 /// soon as the blocks before it are, so the memory it needs does not grow
 /// with the image (docs/benchmarks.md, "Fresh memory"). The offset table is
 /// written last, into the place kept for it after the header.
-/// \throws std::logic_error / Iex errors when the header is not one this
-///         writer handles, std::runtime_error when igzip fails or the file
-///         cannot be written.
-void writeExrZipFile(const std::string& path, const Imf::Header& header,
+/// \throws std::logic_error when the header's compression is another,
+///         std::runtime_error when igzip fails or the file cannot be written.
+void writeExrZipFile(const std::string& path, const ExrHeader& header,
                      const ExrBlockLines& lines, int threads);
 
-/// \brief The bytes writeExrZipFile writes, for pixels in `frameBuffer`.
+/// \brief OpenEXR's header as an ExrHeader: the same attributes, each with the
+/// bytes its writeValueTo writes, so the ExrHeader's bytes are writeTo's
+/// (for tests, which build their images with OpenEXR).
+/// \throws std::logic_error for a tiled or multi-part header, a subsampled
+///         or perceptually linear channel; Iex errors when OpenEXR's own
+///         sanityCheck refuses it.
+ExrHeader exrHeaderOf(const Imf::Header& header);
+
+/// \brief The bytes writeExrZipFile writes for exrHeaderOf(header), with
+/// the pixels in `frameBuffer`.
 ///
 /// Every channel of the header needs a slice of its own pixel type in the
 /// frame buffer (a channel without one is written as zeros, like
