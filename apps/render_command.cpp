@@ -513,11 +513,15 @@ int renderCommand(const std::vector<std::string>& args) {
         for (const OutputFlag& output : outputFlags(cli))
             if (!output.path.empty())
                 checkWritable(cli.frames ? sequenceFileName(output.path, frames.first) : output.path);
-        // JPEG, HDR and TIFF are written through OpenImageIO, loaded only
-        // for them: when it cannot be, say so now, not after the render.
+        // JPEG, HDR and TIFF are written through OpenImageIO, EXRs of the
+        // compressions raylab does not write itself through OpenEXR, each
+        // loaded only for them: when it cannot be, say so now, not after the
+        // render.
         for (const OutputFlag& image : cli.images) {
             const OutputFormat format = *outputFormatOf(image.path);
-            if (format != OutputFormat::Exr && format != OutputFormat::Png)
+            if (format == OutputFormat::Exr)
+                prepareExrWriter(image.path, cli.compression);
+            else if (format != OutputFormat::Png)
                 prepareOiioImageWriter(image.path, format);
         }
     }

@@ -8,11 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStdIO.h>
-#include <OpenEXR/ImfThreading.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_invoke.h>
 
@@ -21,6 +16,7 @@
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_planes.h"
 #include "renderer/io/exr_header.h"
+#include "renderer/io/exr_module_loader.h"
 #include "renderer/io/exr_zip_file.h"
 #include "renderer/thread_arena.h"
 
@@ -63,17 +59,20 @@ ExrBox exrDataWindow(const Film& film) {
             film.originY + film.height - 1};
 }
 
-/// OpenEXR's header for the same bytes: the compressions raylab does not
-/// write itself go through Imf::OutputFile, from the one ExrHeader.
-Imf::Header imfHeaderOf(const ExrHeader& header) {
-    std::string bytes;
-    header.appendTo(bytes);
-    Imf::StdISStream is;
-    is.str(bytes);
-    Imf::Header out;
-    int version = 2 | (header.usesLongNames() ? 0x400 : 0);
-    out.readFrom(is, version);
-    return out;
+/// Whether raylab writes files of this compression itself (ZIP, ZIPS), or
+/// through OpenEXR's module.
+bool writtenByRaylab(ExrCompression c) {
+    return c == ExrCompression::Zip || c == ExrCompression::Zips;
+}
+
+/// The OpenEXR module, loaded now if it is not yet (exr_module.h): ZIP and
+/// ZIPS files never map it.
+const exr_module::Api& openExrWriter(const std::string& path) {
+    try {
+        return exrModule();
+    } catch (const ExrModuleUnavailable& e) {
+        throw InputError(path, 0, std::string("cannot write EXR: ") + e.what());
+    }
 }
 
 /// The planes of ExrPlanes a channel can come from.
@@ -262,36 +261,37 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
         return;
     }
     // Other compressions: the whole frame's planes, handed to OpenEXR.
+    const exr_module::Api& openExr = openExrWriter(path);
     ExrPlanes planes;
     prepareExrFramePlanes(film, opts.floatPixels, mattes, planes, opts.threads);
-    const Imath::Box2i imfDataWindow({dataWindow.xMin, dataWindow.yMin},
-                                     {dataWindow.xMax, dataWindow.yMax});
-    Imf::FrameBuffer fb;
+    exr_module::WriteRequest request;
+    header.appendTo(request.header);
+    request.versionField = 2 | (header.usesLongNames() ? 0x400 : 0);
     for (const FilmChannel& c : layout) {
         const ExrChannelSource s = sourceOf(c, planes, w);
-        fb.insert(c.name, Imf::Slice::Make(Imf::PixelType(c.type), const_cast<char*>(s.base),
-                                           imfDataWindow, size_t(s.xStride), size_t(s.yStride)));
+        request.slices.push_back({c.name, int32_t(c.type), const_cast<char*>(s.base), s.xStride,
+                                  s.yStride, 0.0});
     }
-    // The other compressions go through OpenEXR, on its worker pool.
-    const int threads =
+    // OpenEXR compresses on its worker pool.
+    request.threads =
         opts.threads > 0 ? opts.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    // OpenEXR runs compression tasks on its global pool (empty by default, i.e.
-    // everything on the calling thread); the per-file count alone adds no workers.
-    if (Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
     // The file's count sets how many blocks are in flight: two per thread
     // (OpenEXR's rule) would give each thread a second 16-row buffer with its
     // compressor's buffers, ~1.7 MB of fresh memory on balls.nff's 25 channels
     // (~430 page faults of ~10 us on this project's VMs) for no faster write:
     // one per thread (rounded up to a pair) measured 5-10 ms less on balls
     // --spd with 2 threads (docs/benchmarks.md, bar 3).
-    const int blocksInFlight = (threads + 1) / 2;  // OpenEXR keeps 2 per count
+    request.blocksInFlight = (request.threads + 1) / 2;  // OpenEXR keeps 2 per count
     writeFileAtomically(path, [&](const std::string& tmp) {
-        // The OutputFile is closed (offset table written) when it goes out of
-        // scope, before writeFileAtomically renames the file.
-        Imf::OutputFile file(tmp.c_str(), imfHeaderOf(header), blocksInFlight);
-        file.setFrameBuffer(fb);
-        file.writePixels(film.height);  // every scan line of the data window
+        request.path = tmp;
+        std::string error;
+        // The file is closed (offset table written) before writeFileAtomically renames it.
+        if (!openExr.write(request, error)) throw std::runtime_error(error);
     }, group);
+}
+
+void prepareExrWriter(const std::string& path, ExrCompression compression) {
+    if (!writtenByRaylab(compression)) (void)openExrWriter(path);
 }
 
 }  // namespace raylab

@@ -37,7 +37,9 @@
 namespace raylab {
 
 /// Lossless compressions of OpenEXR that `raylab render --compression` offers
-/// (docs/benchmarks.md measures each: CPU time, bytes).
+/// (docs/benchmarks.md measures each: CPU time, bytes). ZIP and ZIPS files are
+/// written by raylab itself (exr_zip_file.h); the others by OpenEXR, loaded
+/// for them (exr_module.h).
 enum class ExrCompression { None, Rle, Zips, Zip, Piz };
 
 /// --compression names, in the enum's order.
@@ -91,5 +93,11 @@ std::string matteName(const std::vector<std::string>& objectNames, int index);
 /// With `group`, the file is staged in it and appears at group->commit().
 void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
               AtomicFileGroup* group = nullptr);
+
+/// \brief Makes sure an EXR of `compression` can be written to `path`: ZIP
+/// and ZIPS are raylab's own; the others load OpenEXR's module now
+/// (exr_module.h), so that a render fails before it starts, not after.
+/// \throws InputError(path, 0, reason) when the module cannot be loaded.
+void prepareExrWriter(const std::string& path, ExrCompression compression);
 
 }  // namespace raylab

@@ -18,8 +18,6 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfStdIO.h>
 
 #include "renderer/huge_array.h"
 #include "renderer/io/igzip_stream.h"
@@ -328,60 +326,20 @@ void writeExrZipFile(const std::string& path, const ExrHeader& header,
     sink.close();
 }
 
-ExrHeader exrHeaderOf(const Imf::Header& header) {
-    if (header.hasTileDescription() || header.hasType())
-        throw std::logic_error("exrHeaderOf: only single-part scan-line images");
-    header.sanityCheck();
-    const auto box = [](const Imath::Box2i& b) { return ExrBox{b.min.x, b.min.y, b.max.x, b.max.y}; };
-    ExrHeader out(box(header.displayWindow()), box(header.dataWindow()));
-    out.setCompression(ExrCompressionId(header.compression()));
-    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
-        const Imf::Channel& channel = it.channel();
-        if (channel.xSampling != 1 || channel.ySampling != 1 || channel.pLinear)
-            throw std::logic_error(std::string("exrHeaderOf: channel ") + it.name() +
-                                   " is subsampled or perceptually linear");
-        out.addChannel(it.name(), ExrPixelType(channel.type));
-    }
-    // Every other attribute as its own bytes (what writeTo writes for it).
-    for (auto it = header.begin(); it != header.end(); ++it) {
-        if (std::strcmp(it.name(), "channels") == 0) continue;
-        Imf::StdOSStream os;
-        it.attribute().writeValueTo(os, kExrVersion);
-        out.setAttribute(it.name(), it.attribute().typeName(), os.str());
-    }
-    return out;
-}
-
-std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
-                             int threads) {
-    const ExrHeader own = exrHeaderOf(header);
-    const BlockLayout layout = blockLayout(own);
-    // Channels in the file's order (the channel list is sorted by name), each
-    // addressed from the data window's left edge of line 0.
-    std::vector<ExrChannelSource> sources;
-    for (const ExrHeader::Channel& channel : own.channels()) {
-        ExrChannelSource source;
-        source.size = exrPixelTypeSize(channel.type);
-        if (const Imf::Slice* slice = frameBuffer.findSlice(channel.name)) {
-            if (ExrPixelType(slice->type) != channel.type || slice->xSampling != 1 ||
-                slice->ySampling != 1)
-                throw std::logic_error("encodeExrZipFile: the slice of channel " + channel.name +
-                                       " has another type or sampling");
-            source.base = slice->base + ptrdiff_t(layout.dataWindow.xMin) * ptrdiff_t(slice->xStride);
-            source.xStride = ptrdiff_t(slice->xStride);
-            source.yStride = ptrdiff_t(slice->yStride);
-        }
-        sources.push_back(source);
-    }
+std::string encodeExrZipFile(const ExrHeader& header,
+                             const std::vector<ExrChannelSource>& sources, int threads) {
+    const BlockLayout layout = blockLayout(header);
+    if (sources.size() != header.channels().size())
+        throw std::logic_error("encodeExrZipFile: one source per channel of the header");
     const ExrBlockLines lines = [&](int y0, int y1, unsigned char* raw) {
         std::vector<ExrChannelSource> block = sources;
         for (ExrChannelSource& s : block)
-            if (s.base) s.base += ptrdiff_t(y0) * s.yStride;
+            if (s.base) s.base += ptrdiff_t(y0 - layout.dataWindow.yMin) * s.yStride;
         gatherExrLines(block, layout.width, y1 - y0, raw);
     };
     std::string file;
     StringSink sink(file);
-    streamFile(own, lines, threads, sink);
+    streamFile(header, lines, threads, sink);
     return file;
 }
 

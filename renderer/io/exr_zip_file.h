@@ -22,9 +22,6 @@
 #include <string>
 #include <vector>
 
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-
 #include "renderer/io/exr_header.h"
 
 namespace raylab {
@@ -79,23 +76,12 @@ using ExrBlockLines = std::function<void(int y0, int y1, unsigned char* raw)>;
 void writeExrZipFile(const std::string& path, const ExrHeader& header,
                      const ExrBlockLines& lines, int threads);
 
-/// \brief OpenEXR's header as an ExrHeader: the same attributes, each with the
-/// bytes its writeValueTo writes, so the ExrHeader's bytes are writeTo's
-/// (for tests, which build their images with OpenEXR).
-/// \throws std::logic_error for a tiled or multi-part header, a subsampled
-///         or perceptually linear channel; Iex errors when OpenEXR's own
-///         sanityCheck refuses it.
-ExrHeader exrHeaderOf(const Imf::Header& header);
-
-/// \brief The bytes writeExrZipFile writes for exrHeaderOf(header), with
-/// the pixels in `frameBuffer`.
-///
-/// Every channel of the header needs a slice of its own pixel type in the
-/// frame buffer (a channel without one is written as zeros, like
-/// Imf::OutputFile does), and sampling 1x1.
-/// \throws as writeExrZipFile, and std::logic_error for a slice of another
-///         type or sampling than its channel.
-std::string encodeExrZipFile(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
+/// \brief The bytes writeExrZipFile writes for `header`, with channel k's
+/// values (the header's order, sorted by name) from sources[k], addressed from
+/// the data window's first pixel (a null base: zeros).
+/// \throws as writeExrZipFile, and std::logic_error when the sources are not
+///         one per channel.
+std::string encodeExrZipFile(const ExrHeader& header, const std::vector<ExrChannelSource>& sources,
                              int threads);
 
 }  // namespace raylab

@@ -19,8 +19,10 @@
 
 #include "renderer/io/exr_header.h"
 #include "renderer/io/exr_zip_file.h"
+#include "support/exr_zip_reference.h"
 
 using namespace raylab;
+using raylab::test::exrHeaderOf;
 
 namespace {
 

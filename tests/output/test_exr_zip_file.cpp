@@ -27,9 +27,12 @@
 #include "renderer/io/atomic_file.h"
 #include "renderer/io/errors.h"
 #include "renderer/io/exr_zip_file.h"
+#include "support/exr_zip_reference.h"
 #include "support/temp_dir.h"
 
 using namespace raylab;
+using raylab::test::encodeExrZipFile;
+using raylab::test::exrHeaderOf;
 using raylab::test::TempDir;
 
 namespace {
