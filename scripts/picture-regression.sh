@@ -95,6 +95,9 @@ for c in "${cases[@]}"; do
     rgba=identical
   else
     rgba=DIFFERENT; differ=1
+    # compare reads through raylab-openexr.so: without it every case "differs".
+    grep -q "OpenEXR is not available" "$work/new/$name.compare" &&
+      echo "warning: the new binary has no raylab-openexr.so beside it: $name not compared (see $work/new/$name.compare)"
   fi
   if cmp -s "$work/old/$name.exr" "$work/new/$name.exr"; then
     bytes=same

@@ -26,6 +26,9 @@ Loaded load() {
 #else
     const char* buildPath = nullptr;
 #endif
+    // The first module found is the one meant: a broken one beside the
+    // executable (or one of another build, whose interface may differ) is
+    // reported, not replaced by the build tree's.
     std::string reasons;
     for (const std::string& path : moduleCandidates(kModuleName, buildPath)) {
         if (::access(path.c_str(), F_OK) != 0) continue;
@@ -34,12 +37,14 @@ Loaded load() {
                                                         exr_module::kVersion, "OpenEXR");
         if (!opened.api) {
             reasons = opened.failure;
-            continue;
+            break;
         }
         g_loaded = true;
         return {opened.api, {}};
     }
-    if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
+    if (reasons.empty())
+        reasons = std::string(kModuleName) + " not found beside the executable" +
+                  (buildPath ? " nor in the build tree" : "");
     return {nullptr, "OpenEXR is not available (" + reasons + ")"};
 }
 

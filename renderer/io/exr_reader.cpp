@@ -1,6 +1,8 @@
 #include "renderer/io/exr_reader.h"
 
 #include <algorithm>
+#include <exception>
+#include <new>
 #include <optional>
 #include <vector>
 
@@ -46,8 +48,8 @@ Film readExr(const std::string& path) {
         throw InputError(path, 0, std::string("cannot read EXR: ") + e.what());
     }
     Film film;
-    std::optional<std::string> refused;  // a window refused before any allocation
-    const exr_module::SlicesFor slicesFor = [&](const exr_module::ReadInfo& info) {
+    std::optional<std::string> refused;  // a window refused, or no memory for it
+    const auto slicesOf = [&](const exr_module::ReadInfo& info) {
         std::vector<exr_module::Slice> slices;
         const long long w = (long long)info.dataWindow[2] - info.dataWindow[0] + 1;
         const long long h = (long long)info.dataWindow[3] - info.dataWindow[1] + 1;
@@ -79,6 +81,18 @@ Film readExr(const std::string& path) {
                  0.0);
         addLayer(slices, present, {"objectId"}, film.objectId, n, size_t(w), 0.0);
         return slices;
+    };
+    // Nothing is thrown across the module's boundary (exr_module.h): a
+    // failure here is reported once the module has returned.
+    const exr_module::SlicesFor slicesFor = [&](const exr_module::ReadInfo& info) {
+        try {
+            return slicesOf(info);
+        } catch (const std::bad_alloc&) {
+            refused = "cannot read EXR: out of memory for its pixels";
+        } catch (const std::exception& e) {
+            refused = std::string("cannot read EXR: ") + e.what();
+        }
+        return std::vector<exr_module::Slice>{};
     };
     std::string error;
     // OpenEXR reports missing files and corrupt data as its exceptions: the

@@ -5,6 +5,11 @@
 
 #include <doctest/doctest.h>
 
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStdIO.h>
+
+#include <filesystem>
 #include <string>
 
 #include "renderer/io/errors.h"
@@ -23,6 +28,25 @@ Film testFilm() {
     Film film(5, 3);
     for (size_t i = 0; i < film.rgba.size(); ++i) film.rgba[i] = float(i % 7) * 0.125f;
     return film;
+}
+
+/// A file's header as OpenEXR writes it, with the compression set to ZIP (so
+/// two files of different compressions compare on everything else).
+std::string headerBytes(const std::string& path) {
+    Imf::InputFile file(path.c_str());
+    Imf::Header header = file.header();
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::StdOSStream os;
+    header.writeTo(os);
+    return os.str();
+}
+
+int errorLines(const std::string& err) {
+    int n = 0;
+    for (size_t at = err.find("raylab: error: "); at != std::string::npos;
+         at = err.find("raylab: error: ", at + 1))
+        ++n;
+    return n;
 }
 
 }  // namespace
@@ -58,6 +82,60 @@ TEST_CASE("exr module: ZIP, ZIPS and PNG outputs never load it, the first PIZ fi
         CHECK(b.rgba == a.rgba);
         CHECK(b.objectId == a.objectId);
     }
+}
+
+TEST_CASE("exr module: its files carry the header raylab's own writer writes") {
+    // Everything raylab puts in a header: strings (a Cryptomatte manifest of
+    // 400 names), ints, the camera matrices, a crop window.
+    test::TempDir dir;
+    Film film(4, 3, 2, 1, 9, 7);
+    ExrOptions zip, piz;
+    zip.software = "raylab test";
+    zip.settings = "spp 1";
+    zip.scenePath = "scene.json";
+    zip.frame = 3;
+    zip.camera = CameraMatrices{};
+    for (int k = 0; k < 400; ++k) zip.objectNames.push_back("object number " + std::to_string(k));
+    piz = zip;
+    piz.compression = ExrCompression::Piz;
+    writeExr(dir.file("zip.exr"), film, zip);
+    writeExr(dir.file("piz.exr"), film, piz);
+    const std::string a = headerBytes(dir.file("zip.exr"));
+    CHECK(a.find("object number 399") != std::string::npos);
+    CHECK(a == headerBytes(dir.file("piz.exr")));
+}
+
+TEST_CASE("exr module: a module that cannot be loaded is one error line, before the render") {
+    // A copy of raylab with a broken raylab-openexr.so beside it: the loader
+    // takes the module beside the executable first, and reports it rather
+    // than falling back to the build tree's.
+    const test::TempDir dir;
+    const std::string copy = dir.file("raylab");
+    std::filesystem::copy_file(RAYLAB_BINARY, copy);
+    dir.write("raylab-openexr.so", "not a shared object\n");
+    const std::string scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/demo.json";
+    const std::string render = copy + " render " + scene + " --width 16 --height 12 --quiet -o ";
+    const test::CommandResult piz = test::runCommand(render + dir.file("piz.exr") + " --compression piz");
+    CHECK(piz.exitCode == 1);
+    const std::string line = "raylab: error: " + dir.file("piz.exr") +
+                             ": cannot write EXR: OpenEXR is not available (" +
+                             dir.file("raylab-openexr.so") + ": ";
+    CHECK_MESSAGE(piz.err.rfind(line, 0) == 0, piz.err);
+    CHECK_MESSAGE(errorLines(piz.err) == 1, piz.err);
+    CHECK_FALSE(std::filesystem::exists(dir.file("piz.exr")));
+    // ZIP, the default, is raylab's own: it does not need the module.
+    const test::CommandResult zip = test::runCommand(render + dir.file("zip.exr"));
+    CHECK_MESSAGE(zip.exitCode == 0, zip.err);
+    CHECK(std::filesystem::exists(dir.file("zip.exr")));
+    // Reading does.
+    const test::CommandResult compare =
+        test::runCommand(copy + " compare " + dir.file("zip.exr") + " " + dir.file("zip.exr"));
+    CHECK(compare.exitCode == 1);
+    CHECK_MESSAGE(compare.err.rfind("raylab: error: " + dir.file("zip.exr") +
+                                        ": cannot read EXR: OpenEXR is not available (",
+                                    0) == 0,
+                  compare.err);
+    CHECK_MESSAGE(errorLines(compare.err) == 1, compare.err);
 }
 
 TEST_CASE("exr module: reading loads it, and its errors name the file") {

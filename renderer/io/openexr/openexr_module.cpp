@@ -3,17 +3,24 @@
 // first use. Every entry point catches everything: nothing may be thrown
 // across the dlopen boundary.
 
+#include <OpenEXR/ImfAttribute.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 
 #include <algorithm>
+#include <climits>
+#include <cstdint>
+#include <cstring>
 #include <exception>
+#include <memory>
 #include <new>
+#include <stdexcept>
 #include <string>
 
 #include "renderer/io/exr_module.h"
@@ -34,6 +41,63 @@ std::string describe(const std::exception_ptr& p) {
     }
 }
 
+/// An EXR string attribute that OpenEXR writes in one piece. Imf::StringAttribute
+/// reads and writes its value one character at a time (about 130
+/// instructions a character): 25-28 M for balls.nff's 185 kB Cryptomatte
+/// manifest at every write (docs/benchmarks.md, bar 3). The same bytes: the
+/// type is "string", the value its characters with no terminator.
+class OnePieceString final : public Imf::StringAttribute {
+public:
+    explicit OnePieceString(const std::string& value) : Imf::StringAttribute(value) {}
+    Imf::Attribute* copy() const override { return new OnePieceString(value()); }
+    void writeValueTo(Imf::OStream& os, int /*version*/) const override {
+        const std::string& s = value();
+        for (size_t at = 0; at < s.size();) {  // OStream::write takes an int count
+            const size_t n = std::min(s.size() - at, size_t(INT_MAX));
+            os.write(s.data() + at, int(n));
+            at += n;
+        }
+    }
+};
+
+/// raylab's header bytes (ExrHeader::appendTo) as OpenEXR's header, one
+/// attribute at a time: OpenEXR's own readValueFrom for each, but a string
+/// taken whole (Imf::Header::readFrom would read the manifest a character at a
+/// time, and write it so).
+Imf::Header headerOf(const std::string& bytes, int versionField) {
+    Imf::Header header;
+    size_t at = 0;
+    const auto name = [&]() -> std::string {
+        const size_t end = bytes.find('\0', at);
+        if (end == std::string::npos) throw std::runtime_error("EXR header: a name without its end");
+        std::string n = bytes.substr(at, end - at);
+        at = end + 1;
+        return n;
+    };
+    for (;;) {
+        const std::string attribute = name();
+        if (attribute.empty()) break;  // the header's end
+        const std::string type = name();
+        int32_t size = 0;
+        if (bytes.size() - at < sizeof size) throw std::runtime_error("EXR header: truncated");
+        std::memcpy(&size, bytes.data() + at, sizeof size);
+        at += sizeof size;
+        if (size < 0 || bytes.size() - at < size_t(size))
+            throw std::runtime_error("EXR header: attribute " + attribute + " is truncated");
+        if (type == "string") {
+            header.insert(attribute, OnePieceString(bytes.substr(at, size_t(size))));
+        } else {
+            std::unique_ptr<Imf::Attribute> value(Imf::Attribute::newAttribute(type.c_str()));
+            Imf::StdISStream is;
+            is.str(bytes.substr(at, size_t(size)));
+            value->readValueFrom(is, size, versionField);
+            header.insert(attribute, *value);
+        }
+        at += size_t(size);
+    }
+    return header;
+}
+
 void insert(Imf::FrameBuffer& fb, const Slice& s, const Imath::Box2i& dataWindow) {
     fb.insert(s.name, Imf::Slice::Make(Imf::PixelType(s.type), s.origin, dataWindow,
                                        size_t(s.xStride), size_t(s.yStride), 1, 1, s.fill));
@@ -41,13 +105,9 @@ void insert(Imf::FrameBuffer& fb, const Slice& s, const Imath::Box2i& dataWindow
 
 bool write(const WriteRequest& request, std::string& error) {
     try {
-        // raylab's header bytes, read by OpenEXR itself: the file carries
-        // exactly the attributes raylab's own ZIP writer would write.
-        Imf::StdISStream is;
-        is.str(request.header);
-        Imf::Header header;
-        int version = request.versionField;
-        header.readFrom(is, version);
+        // raylab's header bytes, each value read by OpenEXR itself: the file
+        // carries exactly the attributes raylab's own ZIP writer would write.
+        const Imf::Header header = headerOf(request.header, request.versionField);
         const Imath::Box2i& dw = header.dataWindow();
         Imf::FrameBuffer fb;
         for (const Slice& s : request.slices) insert(fb, s, dw);
