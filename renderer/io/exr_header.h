@@ -10,7 +10,7 @@
 // (exr_zip_file.h); the header is the last part that needs OpenEXR, whose
 // libraries cost 2.3-2.9 ms of every process's start-up on this project's
 // VMs (docs/benchmarks.md, session 2026-12-06 08:45). The other compressions
-// give these bytes to OpenEXR (Imf::Header::readFrom), so both paths start
+// give these bytes to OpenEXR's module (exr_module.h), so both paths start
 // from one header. tests/output/test_exr_header.cpp compares the bytes with
 // Imf::Header::writeTo's.
 
