@@ -1,7 +1,6 @@
 #include "distributed/mpi_module_loader.h"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <string>
@@ -27,27 +26,17 @@ Loaded load() {
 #else
     const char* buildPath = nullptr;
 #endif
-    // The first module found is the one meant: a broken one beside the
-    // executable is reported, not replaced by the build tree's.
-    std::string reasons;
-    for (const std::string& path : moduleCandidates(kModuleName, buildPath)) {
-        if (::access(path.c_str(), F_OK) != 0) continue;
-        // RTLD_GLOBAL (as mpi4py does): Open MPI dlopens plug-ins of its own
-        // (mca_*.so), and 14 of Debian 12's 120 (btl tcp among them) do not
-        // name libmpi or libopen-pal as dependencies: they find them in the
-        // global scope.
-        const auto opened =
-            openModule<mpi_module::Api>(path, RTLD_NOW | RTLD_GLOBAL, mpi_module::kEntryPoint,
-                                        mpi_module::kVersion, "MPI");
-        if (!opened.api) {
-            reasons = opened.failure;
-            break;
-        }
-        g_loaded = true;
-        return {opened.api, {}};
-    }
-    if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
-    return {nullptr, "MPI is not available (" + reasons + ")"};
+    // RTLD_GLOBAL (as mpi4py does): Open MPI dlopens plug-ins of its own
+    // (mca_*.so), and 14 of Debian 12's 120 (btl tcp among them) do not
+    // name libmpi or libopen-pal as dependencies: they find them in the
+    // global scope. A broken module beside the executable is reported, not
+    // replaced by the build tree's (openFirstModule).
+    const auto opened = openFirstModule<mpi_module::Api>(
+        kModuleName, buildPath, RTLD_NOW | RTLD_GLOBAL, mpi_module::kEntryPoint,
+        mpi_module::kVersion, "MPI");
+    if (!opened.api) return {nullptr, "MPI is not available (" + opened.failure + ")"};
+    g_loaded = true;
+    return {opened.api, {}};
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "renderer/io/exr_module_loader.h"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <atomic>
 
@@ -26,26 +25,12 @@ Loaded load() {
 #else
     const char* buildPath = nullptr;
 #endif
-    // The first module found is the one meant: a broken one beside the
-    // executable (or one of another build, whose interface may differ) is
-    // reported, not replaced by the build tree's.
-    std::string reasons;
-    for (const std::string& path : moduleCandidates(kModuleName, buildPath)) {
-        if (::access(path.c_str(), F_OK) != 0) continue;
-        const auto opened = openModule<exr_module::Api>(path, RTLD_NOW | RTLD_LOCAL,
-                                                        exr_module::kEntryPoint,
-                                                        exr_module::kVersion, "OpenEXR");
-        if (!opened.api) {
-            reasons = opened.failure;
-            break;
-        }
-        g_loaded = true;
-        return {opened.api, {}};
-    }
-    if (reasons.empty())
-        reasons = std::string(kModuleName) + " not found beside the executable" +
-                  (buildPath ? " nor in the build tree" : "");
-    return {nullptr, "OpenEXR is not available (" + reasons + ")"};
+    const auto opened = openFirstModule<exr_module::Api>(
+        kModuleName, buildPath, RTLD_NOW | RTLD_LOCAL, exr_module::kEntryPoint,
+        exr_module::kVersion, "OpenEXR");
+    if (!opened.api) return {nullptr, "OpenEXR is not available (" + opened.failure + ")"};
+    g_loaded = true;
+    return {opened.api, {}};
 }
 
 }  // namespace

@@ -106,25 +106,16 @@ Loaded load(const std::string& image) {
 #else
     const char* buildPath = nullptr;
 #endif
-    std::string reasons;
-    for (const std::string& path : moduleCandidates(kModuleName, buildPath)) {
-        if (::access(path.c_str(), F_OK) != 0) continue;
-        if (const auto refusal = addressSpaceRefusal(path, image)) {
-            reasons = *refusal;
-            break;
-        }
-        const auto opened =
-            openModule<image_module::Api>(path, RTLD_NOW | RTLD_LOCAL, image_module::kEntryPoint,
-                                          image_module::kVersion, "image");
-        if (!opened.api) {
-            reasons = opened.failure;
-            continue;
-        }
-        g_loaded = true;
-        return {opened.api, {}};
-    }
-    if (reasons.empty()) reasons = std::string(kModuleName) + " not found beside the executable";
-    return {nullptr, "OpenImageIO is not available (" + reasons + ")"};
+    // Under a finite ulimit -v the module is probed before it is opened
+    // (addressSpaceRefusal); a broken one beside the executable is reported,
+    // not replaced by the build tree's (openFirstModule).
+    const auto opened = openFirstModule<image_module::Api>(
+        kModuleName, buildPath, RTLD_NOW | RTLD_LOCAL, image_module::kEntryPoint,
+        image_module::kVersion, "image",
+        [&](const std::string& path) { return addressSpaceRefusal(path, image); });
+    if (!opened.api) return {nullptr, "OpenImageIO is not available (" + opened.failure + ")"};
+    g_loaded = true;
+    return {opened.api, {}};
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 // where the build put them (compiled in), for executables elsewhere in the tree.
 
 #include <dlfcn.h>
+#include <unistd.h>
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +44,26 @@ OpenedModule<Api> openModule(const std::string& path, int dlopenFlags, const cha
         return {nullptr, path + " is not raylab's " + what + " module of interface version " +
                              std::to_string(version)};
     return {api, {}};
+}
+
+/// \brief The first of moduleCandidates(fileName, buildPath) that exists,
+///   opened with openModule. The first module found is the one meant: one
+///   that does not load (broken, or of another build, whose interface may
+///   differ) is reported, not replaced by a later candidate. `refusal`, when
+///   set, may refuse a found file before it is opened: its text is then the
+///   failure.
+template <class Api>
+OpenedModule<Api> openFirstModule(
+    const std::string& fileName, const char* buildPath, int dlopenFlags, const char* entryPoint,
+    int version, const char* what,
+    const std::function<std::optional<std::string>(const std::string& path)>& refusal = {}) {
+    for (const std::string& path : moduleCandidates(fileName, buildPath)) {
+        if (::access(path.c_str(), F_OK) != 0) continue;
+        if (refusal)
+            if (std::optional<std::string> refused = refusal(path)) return {nullptr, *refused};
+        return openModule<Api>(path, dlopenFlags, entryPoint, version, what);
+    }
+    return {nullptr, fileName + " not found beside the executable"};
 }
 
 }  // namespace raylab

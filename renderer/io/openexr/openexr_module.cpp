@@ -24,22 +24,11 @@
 #include <string>
 
 #include "renderer/io/exr_module.h"
+#include "renderer/io/module_failure.h"
 
 namespace {
 
 using namespace raylab::exr_module;
-
-std::string describe(const std::exception_ptr& p) {
-    try {
-        std::rethrow_exception(p);
-    } catch (const std::bad_alloc&) {
-        return "out of memory";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return "unknown failure";
-    }
-}
 
 /// An EXR string attribute that OpenEXR writes in one piece. Imf::StringAttribute
 /// reads and writes its value one character at a time (about 130
@@ -121,7 +110,7 @@ bool write(const WriteRequest& request, std::string& error) {
         file.writePixels(dw.max.y - dw.min.y + 1);
         return true;
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
         return false;
     }
 }
@@ -147,7 +136,7 @@ bool read(const std::string& path, const SlicesFor& slicesFor, std::string& erro
         file.readPixels(dw.min.y, dw.max.y);
         return true;
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
         return false;
     }
 }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "renderer/io/image_module.h"
+#include "renderer/io/module_failure.h"
 
 namespace {
 
@@ -23,18 +24,6 @@ std::string oneLine(std::string e, const char* fallback) {
     for (char& c : e)
         if (c == '\n') c = ' ';
     return e.empty() ? fallback : e;
-}
-
-std::string describe(const std::exception_ptr& p) {
-    try {
-        std::rethrow_exception(p);
-    } catch (const std::bad_alloc&) {
-        return "out of memory";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return "unknown failure";
-    }
 }
 
 class OiioImageFile final : public ImageFile {
@@ -63,7 +52,7 @@ private:
             if (m_in->read_image(0, 0, 0, channels, type, texels)) return true;
             error = oneLine(m_in->geterror(), "broken image data");
         } catch (...) {
-            error = describe(std::current_exception());
+            error = raylab::describeFailure(std::current_exception());
         }
         return false;
     }
@@ -85,7 +74,7 @@ std::unique_ptr<ImageFile> openImage(const std::string& path, std::string& error
         }
         return std::make_unique<OiioImageFile>(std::move(in));
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
         return nullptr;
     }
 }
@@ -104,7 +93,7 @@ bool writeFloat(const std::string& path, int width, int height, int channels,
             return true;
         error = oneLine(out->geterror(), "cannot write the image");
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
     }
     return false;
 }
@@ -160,7 +149,7 @@ std::unique_ptr<TextureSystemFile> openTextureSystem(const std::string& path,
     try {
         return std::make_unique<OiioTextureSystemFile>(path);
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
         return nullptr;
     }
 }
@@ -189,7 +178,7 @@ bool writeImage(const WriteRequest& r, std::string& error) {
         if (out->close()) return true;
         error = oneLine(out->geterror(), "cannot finish the file");
     } catch (...) {
-        error = describe(std::current_exception());
+        error = raylab::describeFailure(std::current_exception());
     }
     return false;
 }
