@@ -116,6 +116,13 @@ void ExrHeader::setAttribute(const std::string& name, const std::string& typeNam
     m_attributes[name] = Attribute{typeName, std::move(value)};
 }
 
+std::vector<ExrAttribute> ExrHeader::attributes() const {
+    std::vector<ExrAttribute> out;
+    out.reserve(m_attributes.size());
+    for (const auto& [name, a] : m_attributes) out.push_back({name, a.typeName, a.value});
+    return out;
+}
+
 bool ExrHeader::usesLongNames() const {
     for (const auto& [name, a] : m_attributes)
         if (name.size() >= 32 || a.typeName.size() >= 32) return true;

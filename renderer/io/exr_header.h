@@ -10,7 +10,7 @@
 // (exr_zip_file.h); the header is the last part that needs OpenEXR, whose
 // libraries cost 2.3-2.9 ms of every process's start-up on this project's
 // VMs (docs/benchmarks.md, session 2026-12-06 08:45). The other compressions
-// give these bytes to OpenEXR's module (exr_module.h), so both paths start
+// give its attributes to OpenEXR's module (exr_module.h), so both paths start
 // from one header. tests/output/test_exr_header.cpp compares the bytes with
 // Imf::Header::writeTo's.
 
@@ -32,6 +32,13 @@ enum class ExrCompressionId : uint8_t { None = 0, Rle = 1, Zips = 2, Zip = 3, Pi
 
 /// Scan lines of one block (chunk) of a file with this compression (OpenEXR's rule).
 int exrLinesPerBlock(ExrCompressionId compression);
+
+/// One attribute of a header: its name, its type's name and its value's bytes.
+struct ExrAttribute {
+    std::string name;
+    std::string typeName;
+    std::string value;
+};
 
 /// An integer box, corners inclusive (OpenEXR's box2i).
 struct ExrBox {
@@ -69,9 +76,15 @@ public:
     /// Adds or replaces an attribute of any type, given its value's bytes.
     void setAttribute(const std::string& name, const std::string& typeName, std::string value);
 
+    /// Every attribute but the channel list (channels()), in name order.
+    std::vector<ExrAttribute> attributes() const;
+
     /// Whether a name reaches 32 characters: the version field then carries
     /// the long-names flag (OpenEXR's rule, ImfHeader.cpp).
     bool usesLongNames() const;
+    /// The file's version field: 2, with the long-names flag (0x400) when
+    /// usesLongNames().
+    int32_t versionField() const { return 2 | (usesLongNames() ? 0x400 : 0); }
 
     /// Appends the header's bytes, as Imf::Header::writeTo writes them (after
     /// the magic number and version field, which are not the header's).

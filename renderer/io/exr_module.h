@@ -19,10 +19,12 @@
 #include <string>
 #include <vector>
 
+#include "renderer/io/exr_header.h"
+
 namespace raylab::exr_module {
 
 /// Bumped whenever anything below changes shape.
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 /// The module's one exported symbol: `extern "C" const Api* raylab_exr_module_v1()`.
 constexpr const char* kEntryPoint = "raylab_exr_module_v1";
 
@@ -39,9 +41,10 @@ struct Slice {
 /// A scan-line file to write with OpenEXR's OutputFile.
 struct WriteRequest {
     std::string path;
-    std::string header;       ///< ExrHeader::appendTo's bytes
-    int32_t versionField = 2;  ///< the file's version field (2, with 0x400 for long names)
-    std::vector<Slice> slices;
+    /// The header's attributes but its channel list (ExrHeader::attributes),
+    /// each value as the file holds it: OpenEXR reads each back itself.
+    std::vector<ExrAttribute> attributes;
+    std::vector<Slice> slices;  ///< one per channel: the channel list
     int threads = 1;         ///< OpenEXR's global pool is grown to this many
     int blocksInFlight = 1;  ///< OutputFile's thread count (it keeps two blocks per count)
 };

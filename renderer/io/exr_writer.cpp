@@ -266,8 +266,7 @@ void writeExr(const std::string& path, const Film& film, const ExrOptions& opts,
     ExrPlanes planes;
     prepareExrFramePlanes(film, opts.floatPixels, mattes, planes, opts.threads);
     exr_module::WriteRequest request;
-    header.appendTo(request.header);
-    request.versionField = 2 | (header.usesLongNames() ? 0x400 : 0);
+    request.attributes = header.attributes();
     for (const FilmChannel& c : layout) {
         const ExrChannelSource s = sourceOf(c, planes, w);
         request.slices.push_back({c.name, int32_t(c.type), const_cast<char*>(s.base), s.xStride,

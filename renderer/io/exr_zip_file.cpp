@@ -28,8 +28,6 @@ namespace raylab {
 namespace {
 
 constexpr int32_t kExrMagic = 20000630;
-constexpr int32_t kExrVersion = 2;
-constexpr int32_t kLongNamesFlag = 0x400;  // a name of 32 characters or more
 
 /// One thread's buffers: the raw block, its pre-pass, and igzip's hash
 /// tables, reused block after block (fresh zeroed pages for each block were
@@ -249,7 +247,7 @@ void streamFile(const ExrHeader& header, const ExrBlockLines& lines, int threads
     const ExrBox& dw = layout.dataWindow;
     std::string head;
     appendBytes(head, kExrMagic);
-    appendBytes(head, int32_t(kExrVersion | (header.usesLongNames() ? kLongNamesFlag : 0)));
+    appendBytes(head, header.versionField());
     header.appendTo(head);
     sink.append(head.data(), head.size());
     // The table's place (zeros until the chunks' offsets are known).

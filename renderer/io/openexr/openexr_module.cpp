@@ -15,12 +15,9 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdint>
-#include <cstring>
 #include <exception>
 #include <memory>
 #include <new>
-#include <stdexcept>
 #include <string>
 
 #include "renderer/io/exr_module.h"
@@ -49,41 +46,25 @@ public:
     }
 };
 
-/// raylab's header bytes (ExrHeader::appendTo) as OpenEXR's header, one
-/// attribute at a time: OpenEXR's own readValueFrom for each, but a string
-/// taken whole (Imf::Header::readFrom would read the manifest a character at a
-/// time, and write it so).
-Imf::Header headerOf(const std::string& bytes, int versionField) {
+/// raylab's header as OpenEXR's: each attribute's value read by OpenEXR's
+/// own readValueFrom, but a string taken whole (Imf::StringAttribute would
+/// read the manifest a character at a time, and write it so); the channels
+/// are the slices'.
+Imf::Header headerOf(const WriteRequest& request) {
     Imf::Header header;
-    size_t at = 0;
-    const auto name = [&]() -> std::string {
-        const size_t end = bytes.find('\0', at);
-        if (end == std::string::npos) throw std::runtime_error("EXR header: a name without its end");
-        std::string n = bytes.substr(at, end - at);
-        at = end + 1;
-        return n;
-    };
-    for (;;) {
-        const std::string attribute = name();
-        if (attribute.empty()) break;  // the header's end
-        const std::string type = name();
-        int32_t size = 0;
-        if (bytes.size() - at < sizeof size) throw std::runtime_error("EXR header: truncated");
-        std::memcpy(&size, bytes.data() + at, sizeof size);
-        at += sizeof size;
-        if (size < 0 || bytes.size() - at < size_t(size))
-            throw std::runtime_error("EXR header: attribute " + attribute + " is truncated");
-        if (type == "string") {
-            header.insert(attribute, OnePieceString(bytes.substr(at, size_t(size))));
-        } else {
-            std::unique_ptr<Imf::Attribute> value(Imf::Attribute::newAttribute(type.c_str()));
-            Imf::StdISStream is;
-            is.str(bytes.substr(at, size_t(size)));
-            value->readValueFrom(is, size, versionField);
-            header.insert(attribute, *value);
+    for (const raylab::ExrAttribute& a : request.attributes) {
+        if (a.typeName == "string") {
+            header.insert(a.name, OnePieceString(a.value));
+            continue;
         }
-        at += size_t(size);
+        std::unique_ptr<Imf::Attribute> value(Imf::Attribute::newAttribute(a.typeName.c_str()));
+        Imf::StdISStream is;
+        is.str(a.value);
+        value->readValueFrom(is, int(a.value.size()), 2);
+        header.insert(a.name, *value);
     }
+    for (const Slice& s : request.slices)
+        header.channels().insert(s.name, Imf::Channel(Imf::PixelType(s.type)));
     return header;
 }
 
@@ -94,9 +75,9 @@ void insert(Imf::FrameBuffer& fb, const Slice& s, const Imath::Box2i& dataWindow
 
 bool write(const WriteRequest& request, std::string& error) {
     try {
-        // raylab's header bytes, each value read by OpenEXR itself: the file
-        // carries exactly the attributes raylab's own ZIP writer would write.
-        const Imf::Header header = headerOf(request.header, request.versionField);
+        // raylab's header, each value read by OpenEXR itself: the file carries
+        // exactly the attributes raylab's own ZIP writer would write.
+        const Imf::Header header = headerOf(request);
         const Imath::Box2i& dw = header.dataWindow();
         Imf::FrameBuffer fb;
         for (const Slice& s : request.slices) insert(fb, s, dw);
