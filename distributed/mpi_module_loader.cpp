@@ -13,10 +13,7 @@ namespace {
 
 constexpr const char* kModuleName = "raylab-mpi.so";
 
-struct Loaded {
-    const mpi_module::Api* api = nullptr;
-    std::string failure;
-};
+using Loaded = OpenedModule<mpi_module::Api>;
 
 std::atomic<bool> g_loaded{false};
 

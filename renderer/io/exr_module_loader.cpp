@@ -12,10 +12,7 @@ namespace {
 
 constexpr const char* kModuleName = "raylab-openexr.so";
 
-struct Loaded {
-    const exr_module::Api* api = nullptr;
-    std::string failure;
-};
+using Loaded = OpenedModule<exr_module::Api>;
 
 std::atomic<bool> g_loaded{false};
 

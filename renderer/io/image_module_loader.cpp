@@ -93,10 +93,7 @@ std::optional<std::string> addressSpaceRefusal(const std::string& module,
     return std::nullopt;
 }
 
-struct Loaded {
-    const image_module::Api* api = nullptr;
-    std::string failure;
-};
+using Loaded = OpenedModule<image_module::Api>;
 
 std::atomic<bool> g_loaded{false};
 
