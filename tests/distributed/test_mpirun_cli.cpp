@@ -23,6 +23,7 @@ const auto kWithMpirun = doctest::skip(std::getenv("RAYLAB_MPIRUN") == nullptr);
 
 using Run = test::CommandResult;
 using test::readFile;
+using test::errorLines;
 using test::runCommand;
 
 std::string raylabBinary() { return RAYLAB_BINARY; }
@@ -255,15 +256,6 @@ namespace {
 /// An MPMD launch of two ranks: rank 0 runs `raylab <rank0>`, rank 1 `raylab <rank1>`.
 std::string mpirunTwoCommands(const std::string& rank0, const std::string& rank1) {
     return mpirunRaylab(1) + " " + rank0 + " : -np 1 " + raylabBinary() + " " + rank1;
-}
-
-/// How many lines of `text` start with "raylab: error:".
-int errorLines(const std::string& text) {
-    int n = text.rfind("raylab: error:", 0) == 0;
-    for (size_t at = text.find("\nraylab: error:"); at != std::string::npos;
-         at = text.find("\nraylab: error:", at + 1))
-        ++n;
-    return n;
 }
 
 const std::string kAgreementAdvice =

@@ -21,6 +21,7 @@
 #include "support/temp_dir.h"
 
 using namespace raylab;
+using raylab::test::errorLines;
 
 namespace {
 
@@ -39,14 +40,6 @@ std::string headerBytes(const std::string& path) {
     Imf::StdOSStream os;
     header.writeTo(os);
     return os.str();
-}
-
-int errorLines(const std::string& err) {
-    int n = 0;
-    for (size_t at = err.find("raylab: error: "); at != std::string::npos;
-         at = err.find("raylab: error: ", at + 1))
-        ++n;
-    return n;
 }
 
 }  // namespace

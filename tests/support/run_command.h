@@ -30,4 +30,13 @@ inline CommandResult runCommand(const std::string& command) {
     return r;
 }
 
+/// How many lines of `text` start with "raylab: error:" (a failure is one).
+inline int errorLines(const std::string& text) {
+    int n = text.rfind("raylab: error:", 0) == 0;
+    for (size_t at = text.find("\nraylab: error:"); at != std::string::npos;
+         at = text.find("\nraylab: error:", at + 1))
+        ++n;
+    return n;
+}
+
 }  // namespace raylab::test
