@@ -7,11 +7,23 @@ namespace raylab {
 namespace {
 
 /// Exactly zero-area triangles (repeated vertices, exactly collinear
-/// coordinates). They are rejected up front: the edge functions of a
-/// collinear triangle can round to a tiny non-zero determinant.
+/// coordinates). They are rejected: the edge functions of a collinear
+/// triangle can round to a tiny non-zero determinant.
 bool isDegenerate(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
     return triangleNormal(p0, p1, p2) == Vec3{0, 0, 0};
 }
+
+/// The zero-area check of the watertight test: computed from the vertices,
+/// or read from the normal a caller already has.
+struct ComputedArea {
+    bool degenerate(const Vec3& p0, const Vec3& p1, const Vec3& p2) const {
+        return isDegenerate(p0, p1, p2);
+    }
+};
+struct KnownNormal {
+    const Vec3& normal;
+    bool degenerate(const Vec3&, const Vec3&, const Vec3&) const { return normal == Vec3{0, 0, 0}; }
+};
 
 /// 2D edge function a.x·b.y − a.y·b.x in extended precision.
 double edgeFunctionExtended(double ax, double ay, double bx, double by) {
@@ -20,10 +32,6 @@ double edgeFunctionExtended(double ax, double ay, double bx, double by) {
 }
 
 }  // namespace
-
-Vec3 triangleNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-    return cross(p1 - p0, p2 - p0);
-}
 
 WatertightRay::WatertightRay(const Ray& ray) : o(ray.o) {
     const Vec3& d = ray.d;
@@ -48,14 +56,12 @@ WatertightRay::WatertightRay(const Ray& ray) : o(ray.o) {
     valid = true;
 }
 
-std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
-                                             const Vec3& p2, double tMin, double tMax) {
-    return intersectTriangle(WatertightRay(ray), p0, p1, p2, tMin, tMax);
-}
+namespace {
 
-std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec3& p0,
-                                             const Vec3& p1, const Vec3& p2, double tMin,
-                                             double tMax) {
+template <class Area>
+inline std::optional<TriangleHit> watertightTest(const WatertightRay& ray, const Vec3& p0,
+                                                 const Vec3& p1, const Vec3& p2, double tMin,
+                                                 double tMax, const Area& area) {
     if (!ray.valid) return std::nullopt;
     const auto mx = ray.mx, my = ray.my, mz = ray.mz;
     const double sx = ray.sx, sy = ray.sy, sz = ray.sz;
@@ -91,7 +97,7 @@ std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec
     if (det == 0) return std::nullopt;  // ray parallel to the triangle's plane
     // Checked only for candidate hits, off the hot path of a loop over many
     // triangles: a collinear triangle can pass the sign test by rounding.
-    if (isDegenerate(p0, p1, p2)) return std::nullopt;
+    if (area.degenerate(p0, p1, p2)) return std::nullopt;
 
     // Depth: the scaled z coordinates interpolated with the edge weights. As
     // U, V, W share the sign of det, t is a convex combination of the vertex
@@ -102,6 +108,25 @@ std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec
     const double t = T * invDet;
     if (!(t > tMin && t < tMax)) return std::nullopt;  // also rejects NaN
     return TriangleHit{t, V * invDet, W * invDet};
+}
+
+}  // namespace
+
+std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
+                                             const Vec3& p2, double tMin, double tMax) {
+    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, ComputedArea{});
+}
+
+std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
+                                             const Vec3& p2, const Vec3& normal, double tMin,
+                                             double tMax) {
+    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, KnownNormal{normal});
+}
+
+std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec3& p0,
+                                             const Vec3& p1, const Vec3& p2, double tMin,
+                                             double tMax) {
+    return watertightTest(ray, p0, p1, p2, tMin, tMax, ComputedArea{});
 }
 
 std::optional<TriangleHit> intersectTriangleMollerTrumbore(const Ray& ray, const Vec3& p0,

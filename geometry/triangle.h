@@ -68,6 +68,15 @@ std::optional<TriangleHit> intersectTriangleMollerTrumbore(const Ray& ray, const
 
 /// \brief Unnormalised normal (p1-p0)×(p2-p0): points to the side from which
 ///   p0, p1, p2 appear counter-clockwise; its length is twice the area.
-Vec3 triangleNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2);
+inline Vec3 triangleNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    return cross(p1 - p0, p2 - p0);
+}
+
+/// \brief intersectTriangle for a caller that already holds the triangle's
+///   `normal` (triangleNormal(p0, p1, p2)): the test's zero-area check reads it
+///   instead of computing it again. Bit-identical to the other overloads.
+std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
+                                             const Vec3& p2, const Vec3& normal, double tMin,
+                                             double tMax);
 
 }  // namespace raylab

@@ -150,7 +150,7 @@ SurfaceGeometry TriangleMesh::surfaceAt(uint32_t prim, const Ray& ray, const Sha
 
     SurfaceGeometry g;
     double u = 0, v = 0;
-    if (const auto h = intersectTriangle(ray, p0, p1, p2, -kInf, kInf)) {
+    if (const auto h = intersectTriangle(ray, p0, p1, p2, n, -kInf, kInf)) {
         g.t = h->t;
         u = h->u;
         v = h->v;

@@ -28,13 +28,11 @@ double Scene::textureBytes() const {
 SurfaceInteraction Scene::surfaceAt(const Ray& ray, const Hit& hit, const IntersectOptions& opt,
                                     SurfaceDetail detail) const {
     const Object& object = objects[hit.object];
-    SurfaceInteraction si;
-    static_cast<SurfaceGeometry&>(si) =
-        object.shape->surfaceAt(hit.prim, ray, ShapeHit{hit.t, hit.u, hit.v}, opt, detail);
-    si.object = hit.object;
-    si.prim = hit.prim;
-    si.material = object.materialOf(hit.prim);
-    return si;
+    // The shape's record is built in place as the base (no zeroed record
+    // first and a copy over it: ~240 bytes twice at every hit).
+    return SurfaceInteraction{
+        object.shape->surfaceAt(hit.prim, ray, ShapeHit{hit.t, hit.u, hit.v}, opt, detail),
+        hit.object, hit.prim, object.materialOf(hit.prim)};
 }
 
 }  // namespace raylab

@@ -30,13 +30,12 @@ inline double saturated(double v) {
 
 inline Color saturated(const Color& c) { return {saturated(c.r), saturated(c.g), saturated(c.b)}; }
 
-/// (k · I) · f in double when that is finite; otherwise the same product in
-/// long double, saturated. `wideF()` gives f in long double (called only then),
-/// so that a factor which underflows a double keeps its size.
+/// The overflow path of saturatedProduct, out of line: it is rare, and kept
+/// inline its long double code would make every caller too large to inline
+/// the common case.
 template <class WideF>
-Color saturatedProduct(const Color& k, const Color& I, double f, const WideF& wideFactor) {
-    const Color c = k * I * f;
-    if (c.isFinite()) return c;
+[[gnu::noinline]] Color saturatedProductWide(const Color& k, const Color& I,
+                                             const WideF& wideFactor) {
     const long double wideF = wideFactor();
     const auto wide = [wideF](double a, double b) {
         // Clamped before the conversion: a long double beyond the double range
@@ -44,6 +43,16 @@ Color saturatedProduct(const Color& k, const Color& I, double f, const WideF& wi
         return double(std::min<long double>((long double)a * b * wideF, DBL_MAX));
     };
     return {wide(k.r, I.r), wide(k.g, I.g), wide(k.b, I.b)};
+}
+
+/// (k · I) · f in double when that is finite; otherwise the same product in
+/// long double, saturated. `wideF()` gives f in long double (called only then),
+/// so that a factor which underflows a double keeps its size.
+template <class WideF>
+inline Color saturatedProduct(const Color& k, const Color& I, double f, const WideF& wideFactor) {
+    const Color c = k * I * f;
+    if (c.isFinite()) [[likely]] return c;
+    return saturatedProductWide(k, I, wideFactor);
 }
 
 }  // namespace raylab
