@@ -239,6 +239,39 @@ TEST_CASE("triangle: random hits satisfy o + t·d = (1-u-v)·p0 + u·p1 + v·p2"
     CHECK(hits > 5000);  // the property was exercised
 }
 
+TEST_CASE("triangle: the overload given the triangle's normal answers bit for bit as the others") {
+    // Scene::surfaceAt passes the normal it already holds; the answers, hits,
+    // misses and rejected zero-area triangles alike, must not change.
+    TriRng rng(11);
+    int hits = 0, misses = 0;
+    const auto same = [](const std::optional<TriangleHit>& a, const std::optional<TriangleHit>& b) {
+        return a.has_value() == b.has_value() &&
+               (!a || (a->t == b->t && a->u == b->u && a->v == b->v));
+    };
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 p0 = rng.point(-1, 1), p1 = rng.point(-1, 1), p2 = rng.point(-1, 1);
+        if (i % 10 == 0) p2 = p1;                                  // a repeated vertex
+        if (i % 10 == 1) p2 = p0 + (p1 - p0) * 2.0;                // collinear
+        const Vec3 target =
+            p0 + (p1 - p0) * rng.uniform(-0.2, 1.2) + (p2 - p0) * rng.uniform(-0.2, 1.2);
+        const Vec3 o = rng.point(-3, 3);
+        const Ray ray{o, (target - o) * rng.uniform(0.5, 2)};
+        const double tMin = i % 3 == 0 ? -kInf : 0, tMax = i % 5 == 0 ? 1.0 : kInf;
+        const auto plain = intersectTriangle(ray, p0, p1, p2, tMin, tMax);
+        const auto given = intersectTriangle(ray, p0, p1, p2, triangleNormal(p0, p1, p2), tMin, tMax);
+        const auto pre = intersectTriangle(WatertightRay(ray), p0, p1, p2, tMin, tMax);
+        CHECK(same(plain, given));
+        CHECK(same(plain, pre));
+        (plain ? hits : misses)++;
+    }
+    CHECK(hits > 3000);  // both outcomes were exercised
+    CHECK(misses > 3000);
+    // A zero-area triangle the edge functions would pass: rejected either way.
+    const Ray down{{0.5, 0.5, 1}, {0, 0, -1}};
+    const Vec3 a{0, 0, 0}, b{1, 1, 0}, c{1, 1, 0};
+    CHECK_FALSE(intersectTriangle(down, a, b, c, triangleNormal(a, b, c), -kInf, kInf));
+}
+
 TEST_CASE("triangle: watertight on a shared edge (never misses both triangles)") {
     // Random pairs of triangles sharing the edge (a, b); rays from random
     // origins aimed at random points of that edge (rounded to double, so

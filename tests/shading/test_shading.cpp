@@ -110,6 +110,15 @@ TEST_CASE("specularPower: whole exponents by squaring, the rest through pow") {
     CHECK(specularPower(0.5, 10) == 1.0 / 1024);
     CHECK(specularPower(0.9, 37) == doctest::Approx(std::pow(0.9, 37)).epsilon(1e-14));
     CHECK(specularPower(0.9, 2.5) == std::pow(0.9, 2.5));
+    // The boundary of the squaring path: 1024 is squared, 1025 and 1023.5
+    // go through pow. 0.999 is a base where the two routes round apart
+    // (0.999^1024: squaring 0.35897147818971331, pow 0.35897147818971004).
+    CHECK(specularPower(0.999, 1024) == 0.35897147818971331);
+    CHECK(std::pow(0.999, 1024.0) != 0.35897147818971331);
+    CHECK(specularPower(0.999, 1025) == std::pow(0.999, 1025.0));
+    CHECK(specularPower(0.999, 1023.5) == std::pow(0.999, 1023.5));
+    CHECK(specularPower(0.999, 1023) == 0.35933080899871195);  // squared
+    CHECK(std::isnan(specularPower(0.5, std::nan(""))));         // pow's answer
 }
 
 TEST_CASE("radiance overflow: saturates at the largest double, never Inf, NaN or black") {
