@@ -139,7 +139,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             // No shadow ray when the normal faces away from the light. The
             // general kernel traces it anyway and then adds nothing, so both
             // kernels produce the same image.
-            const bool facing = dot(n, l) > 0;
+            const double nDotL = dot(n, l);
+            const bool facing = nDotL > 0;
             if (m_prune && !facing) continue;
             const SpawnedRay shadow = spawn(toLight);
             const Departure from = departure(si, toLight);
@@ -170,7 +171,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                 if (state.shadows) slots.remember(hint);
                 if (blocked || !facing) continue;
             }
-            result += lambert(diffuse, arriving, n, l);
+            result += lambert(diffuse, arriving, nDotL);
             if constexpr ((E & kHighlights) != 0) {
                 if (!m_prune || !m.ks.isBlack())
                     result += m.highlight == Highlight::Phong

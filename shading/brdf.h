@@ -10,10 +10,16 @@
 
 namespace raylab {
 
+/// Lambert: kd · I · max(0, N·L), given N·L (a caller that has it already:
+/// the integrator asks it first to skip feelers from faces turned away).
+inline Color lambert(const Color& kd, const Color& lightIntensity, double nDotL) {
+    const double cosine = std::max(0.0, nDotL);
+    return saturatedProduct(kd, lightIntensity, cosine, [cosine] { return (long double)cosine; });
+}
+
 /// Lambert: kd · I · max(0, N·L).
 inline Color lambert(const Color& kd, const Color& lightIntensity, const Vec3& n, const Vec3& l) {
-    const double cosine = std::max(0.0, dot(n, l));
-    return saturatedProduct(kd, lightIntensity, cosine, [cosine] { return (long double)cosine; });
+    return lambert(kd, lightIntensity, dot(n, l));
 }
 
 /// x^s: by repeated squaring when s is a whole number up to 1024 (the usual
