@@ -51,6 +51,14 @@ public:
         else m_spill.push_back({object, weight});
     }
 
+    /// Forgets every object, for the next pixel. Entries past the count are
+    /// never read, so they are left as they are (a fresh MatteCoverage{} per
+    /// pixel rewrote all eight).
+    void clear() {
+        m_count = 0;
+        m_spill.clear();
+    }
+
     /// Writes out.count entries: coverage = weight / divisor, the largest
     /// first (ties: lower object index first), unused ranks {-1, 0}; objects
     /// beyond out.count ranks are dropped (none when the count is

@@ -207,7 +207,7 @@ public:
         m_added = 0;
         m_sum = Color{};
         m_hits = 0;
-        m_mattes = MatteCoverage{};
+        m_mattes.clear();
     }
     int count() const { return m_n; }
     /// Sample k's offset in the pixel; k = 0, 1, ... in order (it draws from the pixel's generator).

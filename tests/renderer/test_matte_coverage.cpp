@@ -79,6 +79,32 @@ TEST_CASE("MatteCoverage: more objects than inline slots and ranks keep the larg
     }
 }
 
+TEST_CASE("MatteCoverage::clear: a reused coverage stores what a fresh one does") {
+    // The render loop clears one coverage per pixel; entries of the last
+    // pixel (inline and spilled) must not reach the next one's ranks.
+    MatteCoverage reused;
+    for (int object = 0; object < 12; ++object) reused.add(object, double(object + 1));
+    reused.clear();
+    checkUnused(stored(reused), 0);
+    reused.add(4, 0.25);
+    reused.add(10, 0.5);  // object 10 sat in the spill before the clear
+    reused.add(4, 0.25);
+    MatteCoverage fresh;
+    fresh.add(4, 0.25);
+    fresh.add(10, 0.5);
+    fresh.add(4, 0.25);
+    const auto a = stored(reused), b = stored(fresh);
+    for (int r = 0; r < kMatteRanks; ++r) {
+        CAPTURE(r);
+        CHECK(a[r].object == b[r].object);
+        CHECK(a[r].coverage == b[r].coverage);
+    }
+    CHECK(a[0].object == 4);  // tie at 0.5: the lower index first
+    CHECK(a[0].coverage == 0.5f);
+    CHECK(a[1].object == 10);
+    checkUnused(a, 2);
+}
+
 TEST_CASE("MatteCoverage::storeSingle writes what store() gives for one object or none") {
     // An SPD pixel whose four corners hit object 5: four quarters.
     MatteCoverage four;
