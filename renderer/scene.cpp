@@ -28,8 +28,8 @@ double Scene::textureBytes() const {
 SurfaceInteraction Scene::surfaceAt(const Ray& ray, const Hit& hit, const IntersectOptions& opt,
                                     SurfaceDetail detail) const {
     const Object& object = objects[hit.object];
-    // The shape's record is built in place as the base (no zeroed record
-    // first and a copy over it: ~240 bytes twice at every hit).
+    // The shape's record initialises the base in place (a prvalue of the
+    // same type); GCC had already elided most of the former assign-over copy.
     return SurfaceInteraction{
         object.shape->surfaceAt(hit.prim, ray, ShapeHit{hit.t, hit.u, hit.v}, opt, detail),
         hit.object, hit.prim, object.materialOf(hit.prim)};
