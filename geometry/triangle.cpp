@@ -13,18 +13,6 @@ bool isDegenerate(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
     return triangleNormal(p0, p1, p2) == Vec3{0, 0, 0};
 }
 
-/// The zero-area check of the watertight test: computed from the vertices,
-/// or read from the normal a caller already has.
-struct ComputedArea {
-    bool degenerate(const Vec3& p0, const Vec3& p1, const Vec3& p2) const {
-        return isDegenerate(p0, p1, p2);
-    }
-};
-struct KnownNormal {
-    const Vec3& normal;
-    bool degenerate(const Vec3&, const Vec3&, const Vec3&) const { return normal == Vec3{0, 0, 0}; }
-};
-
 /// 2D edge function a.x·b.y − a.y·b.x in extended precision.
 double edgeFunctionExtended(double ax, double ay, double bx, double by) {
     using L = long double;
@@ -58,10 +46,11 @@ WatertightRay::WatertightRay(const Ray& ray) : o(ray.o) {
 
 namespace {
 
-template <class Area>
+/// The watertight test; `normal`, when a caller has it, is the triangle's
+/// triangleNormal, read by the zero-area check instead of computed again.
 inline std::optional<TriangleHit> watertightTest(const WatertightRay& ray, const Vec3& p0,
                                                  const Vec3& p1, const Vec3& p2, double tMin,
-                                                 double tMax, const Area& area) {
+                                                 double tMax, const Vec3* normal) {
     if (!ray.valid) return std::nullopt;
     const auto mx = ray.mx, my = ray.my, mz = ray.mz;
     const double sx = ray.sx, sy = ray.sy, sz = ray.sz;
@@ -97,7 +86,7 @@ inline std::optional<TriangleHit> watertightTest(const WatertightRay& ray, const
     if (det == 0) return std::nullopt;  // ray parallel to the triangle's plane
     // Checked only for candidate hits, off the hot path of a loop over many
     // triangles: a collinear triangle can pass the sign test by rounding.
-    if (area.degenerate(p0, p1, p2)) return std::nullopt;
+    if (normal ? *normal == Vec3{0, 0, 0} : isDegenerate(p0, p1, p2)) return std::nullopt;
 
     // Depth: the scaled z coordinates interpolated with the edge weights. As
     // U, V, W share the sign of det, t is a convex combination of the vertex
@@ -114,19 +103,19 @@ inline std::optional<TriangleHit> watertightTest(const WatertightRay& ray, const
 
 std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
                                              const Vec3& p2, double tMin, double tMax) {
-    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, ComputedArea{});
+    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, nullptr);
 }
 
 std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1,
                                              const Vec3& p2, const Vec3& normal, double tMin,
                                              double tMax) {
-    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, KnownNormal{normal});
+    return watertightTest(WatertightRay(ray), p0, p1, p2, tMin, tMax, &normal);
 }
 
 std::optional<TriangleHit> intersectTriangle(const WatertightRay& ray, const Vec3& p0,
                                              const Vec3& p1, const Vec3& p2, double tMin,
                                              double tMax) {
-    return watertightTest(ray, p0, p1, p2, tMin, tMax, ComputedArea{});
+    return watertightTest(ray, p0, p1, p2, tMin, tMax, nullptr);
 }
 
 std::optional<TriangleHit> intersectTriangleMollerTrumbore(const Ray& ray, const Vec3& p0,
