@@ -33,6 +33,22 @@ THREADS = """| binary | threads | wall s | CPU s | render s | write s | rest s |
 /work/main/build/bin/raylab, 2 threads: 1.80× needs the process within 170.0 ms; it takes 163.0 ms (met)
 """
 
+# The same with --per-cpu (2026-12-06 14:54, main b885ffd): the unpinned
+# one-thread process landed on the slower CPU, so 2.10× against 1.61× on
+# the faster one.
+THREADS_PER_CPU = """| binary | threads | wall s | CPU s | render s | write s | rest s | wall speed-up | write ÷ render |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|
+| /work/main/build/bin/raylab | 1 | 0.352 | 0.350 | 0.281 | 0.036 | 0.032 | 1.00× | 13% |
+| /work/main/build/bin/raylab | 2 | 0.168 | 0.308 | 0.123 | 0.018 | 0.028 | 2.10× | 14% |
+| /work/main/build/bin/raylab | 1 on CPU 0 | 0.270 | 0.267 | 0.215 | 0.031 | 0.023 | 1.30× | 14% |
+| /work/main/build/bin/raylab | 1 on CPU 1 | 0.351 | 0.348 | 0.285 | 0.036 | 0.031 | 1.00× | 13% |
+
+/work/main/build/bin/raylab, render pinned: CPU 0 214.7 ms, CPU 1 285.0 ms; the slowest CPU takes 1.33× the fastest's time; 2 threads on these CPUs can at best render in 122.4 ms (1.75× the fastest CPU alone)
+/work/main/build/bin/raylab, 1 -> 2 threads, wall speed-up round by round: median 2.10× (1.56–2.18×)
+/work/main/build/bin/raylab, 2 threads: 1.80× needs the process within 195.8 ms; it takes 167.5 ms (met)
+/work/main/build/bin/raylab, 2 threads against the one-thread process on each CPU: CPU 0 1.61×, CPU 1 2.10×
+"""
+
 INGEST = """threads  phase                 wall_s      MB/s     cpu_s  cpu_MB/s    bytes/tri
 1        loadObj (whole)        0.991      60.7     0.991      60.7        117.3
 1        read + parseObj        0.369     163.1     0.368     163.2         54.1
@@ -59,7 +75,9 @@ class BenchBars(unittest.TestCase):
         self.assertAlmostEqual(balls, 70.124, places=9)
         self.assertAlmostEqual(paired, 73.703, places=9)
         self.assertEqual(bars.parse_povray({}), {})
-        self.assertEqual(bars.parse_threads(THREADS), (1.87, 1.87, 14.0))
+        self.assertEqual(bars.parse_threads(THREADS), (1.87, 1.87, 14.0, None))
+        # The pinned rows are not the bar's: the unpinned two-thread row is.
+        self.assertEqual(bars.parse_threads(THREADS_PER_CPU), (2.10, 2.10, 14.0, "CPU 0 1.61×, CPU 1 2.10×"))
         self.assertEqual(bars.parse_ingest(INGEST), (100.0, 117.1))  # the 2-thread row
         self.assertEqual(bars.parse_regression(REGRESSION), (3, 4))
         self.assertIsNone(bars.parse_limit({}))  # the tool wrote no report
@@ -81,6 +99,10 @@ class BenchBars(unittest.TestCase):
         self.assertEqual(holds, ["no: gears 5.99×", "no", "yes", "on the line (rounded)", "no"])
         self.assertIn("gears 5.99× (6.00×)", rows[0][1])
         self.assertEqual(rows[4][1], "3 of 4 identical")
+        # The pinned speed-ups are shown beside bar 3, which they do not decide.
+        pinned = bars.verdicts({"3": bars.parse_threads(THREADS_PER_CPU)})
+        self.assertEqual(pinned[0][2], "yes")
+        self.assertTrue(pinned[0][1].endswith("; against one thread pinned to each CPU: CPU 0 1.61×, CPU 1 2.10×"))
         # Exactly at the bar: an unrounded figure holds, a printed one is on the line.
         edge = bars.verdicts({"1": {"gears": (6.0, 5.9)}, "2": ((80.0, 79.0), (70.0, 69.0)),
                               "3": (1.8, 1.7, 14.0), "4": (100.1, 150.0), "5": (60, 60)})
