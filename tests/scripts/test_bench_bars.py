@@ -99,6 +99,11 @@ class BenchBars(unittest.TestCase):
         self.assertEqual(holds, ["no: gears 5.99×", "no", "yes", "on the line (rounded)", "no"])
         self.assertIn("gears 5.99× (6.00×)", rows[0][1])
         self.assertEqual(rows[4][1], "3 of 4 identical")
+        # Bar 2's pinned runs are shown beside it; the unpinned figures decide.
+        two = bars.verdicts({"2": ((81.0, 80.5), (69.5, 69.0), ((), ((0, 60.52), (1, 71.23))))})
+        self.assertEqual(two[0][2], "no")
+        self.assertEqual(two[0][1], "balls `--spd` 81.00% (run by run 80.50%), demo 69.50% (run by run "
+                                    "69.00%) [pinned: CPU 0 60.52%, CPU 1 71.23%]")
         # The pinned speed-ups are shown beside bar 3, which they do not decide.
         pinned = bars.verdicts({"3": bars.parse_threads(THREADS_PER_CPU)})
         self.assertEqual(pinned[0][2], "yes")
