@@ -69,10 +69,12 @@ def run(cmd, cpu=None):
         everywhere = os.sched_getaffinity(0)
         os.sched_setaffinity(0, {cpu})  # the child inherits it at the spawn
     t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, start_new_session=NICE is not None)
-    if cpu is not None:
-        os.sched_setaffinity(0, everywhere)
+    try:
+        proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                stderr=subprocess.PIPE, start_new_session=NICE is not None)
+    finally:
+        if cpu is not None:
+            os.sched_setaffinity(0, everywhere)
     if NICE is not None:
         set_priority(proc.pid)
     _, status, ru = os.wait4(proc.pid, 0)
@@ -170,7 +172,6 @@ def main():
                      "met" if wall <= goal else "%.1f ms too long" % (1e3 * (wall - goal))))
             if cpus:
                 pinned = {c: med(x[0] for x in samples[(b, threads[0], c)]) for c in cpus}
-                fastest = min(pinned, key=pinned.get)
                 print("%s, %d threads against the one-thread process on each CPU: %s"
                       % (b, t, ", ".join("CPU %d %.2f×" % (c, w / wall) for c, w in pinned.items())))
     return 0
