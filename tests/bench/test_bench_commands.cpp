@@ -96,6 +96,14 @@ TEST_CASE("bench limit: a tiny run records, replays and reports") {
     CHECK(report.find("run by run (each render against its own replays): median ") !=
           std::string::npos);
     CHECK(doc.find("\"renderer_fraction_per_run\": {\"median\": ") != std::string::npos);
+    // One thread: the CPUs its timed phases ran on, named (sched_getcpu
+    // answers on Linux), one or more of this machine's.
+    const size_t cpusAt = doc.find("\"cpus\": [");
+    REQUIRE(cpusAt != std::string::npos);
+    int firstCpu = -1;
+    REQUIRE(std::sscanf(doc.c_str() + cpusAt, "\"cpus\": [%d", &firstCpu) == 1);
+    CHECK(firstCpu >= 0);
+    CHECK(report.find("  timed on CPU " + std::to_string(firstCpu)) != std::string::npos);
 
     o.outPath = csv;
     o.threads = 2;

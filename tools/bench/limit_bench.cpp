@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -80,10 +81,12 @@ void touchSlice(const std::vector<RecordedRay>& rays, size_t begin, size_t end) 
 /// slice is read in untimed, then replayed bare and through the interface
 /// (alternating which goes first). Adds each replay's time to its total.
 void timeReplays(const PhaseClock& clock, const std::vector<RecordedRay>& rays, EmbreeReplay& bare,
-                 InterfaceReplay& interface, int threads, double& bareSeconds, double& interfaceSeconds) {
+                 InterfaceReplay& interface, int threads, double& bareSeconds, double& interfaceSeconds,
+                 std::set<int>& cpus) {
     bareSeconds = interfaceSeconds = 0;
     for (size_t begin = 0, slice = 0; begin < rays.size(); begin += kSliceRays, ++slice) {
         const size_t end = std::min(rays.size(), begin + kSliceRays);
+        cpus.insert(currentCpu());
         touchSlice(rays, begin, end);
         const auto runBare = [&] { bareSeconds += clock.time([&] { bare.run(threads, begin, end); }); };
         const auto runInterface = [&] {
@@ -130,6 +133,9 @@ struct LimitResult {
     uint64_t bareDisagreements = 0, interfaceDisagreements = 0;
     bool countersMatch = false;
     bool cpuClock = false;  ///< times are the working thread's CPU time (one thread)
+    /// CPUs the calling thread was on around the timed renders and at each
+    /// replay slice (-1: unknown); with one thread, where the phases ran.
+    std::set<int> cpus;
     double loadAverage = -1;  ///< 1-minute load average when the run started
 
     double rate(double seconds) const { return seconds > 0 ? double(rays) / seconds : 0; }
@@ -172,6 +178,9 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
     for (size_t i = 0; i < r.runFractions.size(); ++i)
         runs += (i ? ", " : "") + jsonNumber(r.runFractions[i]);
     runs += "]";
+    std::string cpusJson = "[";
+    for (const int c : r.cpus) cpusJson += (cpusJson.size() > 1 ? ", " : "") + std::to_string(c);
+    cpusJson += "]";
     std::string j = "{\n  \"scene\": " + jsonString(r.scene) +
                     ",\n  \"machine\": {\"cpu\": " + jsonString(cpu) +
                     ", \"cores\": " + std::to_string(logicalCores()) +
@@ -182,6 +191,7 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
                     ",\n  \"threads\": " + std::to_string(r.threads) +
                     ",\n  \"runs\": " + std::to_string(r.runs) +
                     ",\n  \"clock\": " + (r.cpuClock ? "\"thread_cpu\"" : "\"wall\"") +
+                    ",\n  \"cpus\": " + cpusJson +
                     ",\n  \"primitives\": " + std::to_string(r.primitives) +
                     ",\n  \"build_seconds\": " + jsonNumber(r.buildSeconds) +
                     ",\n  \"rays\": {\"total\": " + std::to_string(r.rays) +
@@ -279,11 +289,16 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     r.cpuClock = r.threads == 1;
     const PhaseClock clock(r.cpuClock);
     double bareSeconds = 0, interfaceSeconds = 0;
-    timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds);
+    std::set<int> warmUpCpus;
+    timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds,
+                warmUpCpus);
     std::vector<double> renderTimes, bareTimes, interfaceTimes;
     for (int i = 0; i < options.runs; ++i) {
+        r.cpus.insert(currentCpu());
         renderTimes.push_back(clock.time([&] { render(scene, *accel, renderOptions, effects); }));
-        timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds);
+        r.cpus.insert(currentCpu());
+        timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds,
+                    r.cpus);
         bareTimes.push_back(bareSeconds);
         interfaceTimes.push_back(interfaceSeconds);
         r.runFractions.push_back(bareSeconds / renderTimes.back());
@@ -338,6 +353,15 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
         out << "  frame time split: Embree traversal " << fixed(100 * traversal, 1)
             << "%, query conversion/decoding " << fixed(100 * query, 1)
             << "%, shading, ray generation and bookkeeping " << fixed(100 * rest, 1) << "%\n";
+    }
+    if (r.threads == 1 && !r.cpus.empty() && *r.cpus.begin() >= 0) {
+        std::string list;
+        for (const int c : r.cpus) list += (list.empty() ? "" : ", ") + std::to_string(c);
+        out << "  timed on CPU " << list
+            << (r.cpus.size() > 1
+                    ? " (the process moved: where the CPUs differ in speed, the phases were timed "
+                      "at different speeds; `taskset -c N` keeps it on one)\n"
+                    : "\n");
     }
 
     if (format) {

@@ -1,5 +1,6 @@
 #include "tools/report/machine.h"
 
+#include <sched.h>
 #include <tbb/info.h>
 
 #include <algorithm>
@@ -34,5 +35,7 @@ int logicalCores() { return std::max(1u, std::thread::hardware_concurrency()); }
 int effectiveThreads(int threads) {
     return threads > 0 ? threads : std::max(1, tbb::info::default_concurrency());
 }
+
+int currentCpu() { return sched_getcpu(); }
 
 }  // namespace raylab

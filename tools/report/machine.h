@@ -19,4 +19,11 @@ int logicalCores();
 /// Threads a TBB loop gets for a `threads` setting (0 = all cores).
 int effectiveThreads(int threads);
 
+/// The CPU the calling thread runs on right now (sched_getcpu), or -1. A
+/// one-thread benchmark samples it between its timed phases: on a VM whose
+/// CPUs are not equally fast at a given moment, a process that moved between
+/// them compared phases timed at different speeds (docs/benchmarks.md,
+/// session 2026-12-06 14:38).
+int currentCpu();
+
 }  // namespace raylab
