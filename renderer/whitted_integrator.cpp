@@ -63,6 +63,9 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
 WhittedIntegrator::~WhittedIntegrator() = default;
 
 double WhittedIntegrator::cameraTMin(const Ray& cameraRay) const {
+    // No near plane (JSON scenes' default): 0 / along would be this same +0,
+    // at the cost of a division per camera ray.
+    if (m_scene.cameraNear == 0 && !std::signbit(m_scene.cameraNear)) return 0.0;
     const double along = -dot(cameraRay.d, m_scene.camera.frame().w);
     return along > 0 ? m_scene.cameraNear / along : 0.0;
 }
@@ -73,7 +76,10 @@ Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHi
     if (!m_shadowHints) shadows = nullptr;
     if (shadows) shadows->prepare(m_scene.objects.size(), m_scene.lights.size(), m_options.maxDepth);
     TraceState state{counters, shadows, spent};
-    return (this->*m_kernel)(cameraRay, cameraTMin(cameraRay), state, first, cameraHit);
+    // A given camera hit was asked with cameraHits' own near distance: start
+    // has no use for another.
+    const double tNear = cameraHit ? 0.0 : cameraTMin(cameraRay);
+    return (this->*m_kernel)(cameraRay, tNear, state, first, cameraHit);
 }
 
 void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit>* out) const {
