@@ -82,11 +82,11 @@ void touchSlice(const std::vector<RecordedRay>& rays, size_t begin, size_t end) 
 /// (alternating which goes first). Adds each replay's time to its total.
 void timeReplays(const PhaseClock& clock, const std::vector<RecordedRay>& rays, EmbreeReplay& bare,
                  InterfaceReplay& interface, int threads, double& bareSeconds, double& interfaceSeconds,
-                 std::set<int>& cpus) {
+                 std::set<int>* cpus = nullptr) {
     bareSeconds = interfaceSeconds = 0;
     for (size_t begin = 0, slice = 0; begin < rays.size(); begin += kSliceRays, ++slice) {
         const size_t end = std::min(rays.size(), begin + kSliceRays);
-        cpus.insert(currentCpu());
+        if (cpus) cpus->insert(currentCpu());
         touchSlice(rays, begin, end);
         const auto runBare = [&] { bareSeconds += clock.time([&] { bare.run(threads, begin, end); }); };
         const auto runInterface = [&] {
@@ -110,6 +110,13 @@ uint64_t disagreementsOf(const std::vector<uint8_t>& results, const std::vector<
 
 bool sameCounters(const RayCounters& a, const RayCounters& b) {
     return a.byDepth == b.byDepth && a.cameraHits == b.cameraHits;
+}
+
+/// "0, 1": the report's and the JSON's list of CPUs.
+std::string commaList(const std::set<int>& values) {
+    std::string list;
+    for (const int v : values) list += (list.empty() ? "" : ", ") + std::to_string(v);
+    return list;
 }
 
 std::string fixed(double v, int decimals) {
@@ -178,9 +185,6 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
     for (size_t i = 0; i < r.runFractions.size(); ++i)
         runs += (i ? ", " : "") + jsonNumber(r.runFractions[i]);
     runs += "]";
-    std::string cpusJson = "[";
-    for (const int c : r.cpus) cpusJson += (cpusJson.size() > 1 ? ", " : "") + std::to_string(c);
-    cpusJson += "]";
     std::string j = "{\n  \"scene\": " + jsonString(r.scene) +
                     ",\n  \"machine\": {\"cpu\": " + jsonString(cpu) +
                     ", \"cores\": " + std::to_string(logicalCores()) +
@@ -191,7 +195,7 @@ std::string jsonDocument(const LimitResult& r, const std::string& cpu) {
                     ",\n  \"threads\": " + std::to_string(r.threads) +
                     ",\n  \"runs\": " + std::to_string(r.runs) +
                     ",\n  \"clock\": " + (r.cpuClock ? "\"thread_cpu\"" : "\"wall\"") +
-                    ",\n  \"cpus\": " + cpusJson +
+                    ",\n  \"cpus\": [" + commaList(r.cpus) + "]" +
                     ",\n  \"primitives\": " + std::to_string(r.primitives) +
                     ",\n  \"build_seconds\": " + jsonNumber(r.buildSeconds) +
                     ",\n  \"rays\": {\"total\": " + std::to_string(r.rays) +
@@ -289,16 +293,14 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
     r.cpuClock = r.threads == 1;
     const PhaseClock clock(r.cpuClock);
     double bareSeconds = 0, interfaceSeconds = 0;
-    std::set<int> warmUpCpus;
-    timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds,
-                warmUpCpus);
+    timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds);
     std::vector<double> renderTimes, bareTimes, interfaceTimes;
     for (int i = 0; i < options.runs; ++i) {
         r.cpus.insert(currentCpu());
         renderTimes.push_back(clock.time([&] { render(scene, *accel, renderOptions, effects); }));
         r.cpus.insert(currentCpu());
         timeReplays(clock, rays, replay, interface, replayThreads, bareSeconds, interfaceSeconds,
-                    r.cpus);
+                    &r.cpus);
         bareTimes.push_back(bareSeconds);
         interfaceTimes.push_back(interfaceSeconds);
         r.runFractions.push_back(bareSeconds / renderTimes.back());
@@ -355,9 +357,7 @@ int runLimitBench(const LimitBenchOptions& options, std::ostream& out) {
             << "%, shading, ray generation and bookkeeping " << fixed(100 * rest, 1) << "%\n";
     }
     if (r.threads == 1 && !r.cpus.empty() && *r.cpus.begin() >= 0) {
-        std::string list;
-        for (const int c : r.cpus) list += (list.empty() ? "" : ", ") + std::to_string(c);
-        out << "  timed on CPU " << list
+        out << "  timed on CPU " << commaList(r.cpus)
             << (r.cpus.size() > 1
                     ? " (the process moved: where the CPUs differ in speed, the phases were timed "
                       "at different speeds; `taskset -c N` keeps it on one)\n"
