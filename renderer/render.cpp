@@ -249,7 +249,7 @@ void renderPixel(const WhittedIntegrator& integrator, const Scene& scene,
 }
 
 /// renderPixel over the pixels [x0, x1) of row y (at most kTileSize), with
-/// their camera rays asked of the accelerator 8 at a time: the samples of
+/// their camera rays asked of the accelerator 16 at a time: the samples of
 /// one pixel, then of the next, in renderPixel's order. Each sample's ray,
 /// its hit (exactly the single ray's) and its ray tree are renderPixel's, and
 /// each pixel sums its samples in the same order: every pixel is the same.
@@ -367,9 +367,9 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
                 store(i, traceSample(*m_integrator, m_scene, m_options, i, r.y0, counters));
             return;
         }
-        // The accelerator traces packets: the camera rays of 8 neighbouring
-        // corners are asked together (one Embree packet, each lane's answer
-        // exactly its own); each corner's ray tree then goes on alone, in the
+        // The accelerator traces packets: the camera rays of 16 neighbouring
+        // corners are asked together (one Embree packet with AVX-512, two
+        // without; each lane's answer exactly its own); each corner's ray tree then goes on alone, in the
         // same order as without.
         constexpr int kPacket = Accelerator::kPacketRays;
         Ray rays[kPacket];

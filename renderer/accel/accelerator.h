@@ -54,7 +54,7 @@ public:
     virtual std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
                                          Departure from) const = 0;
     /// The most rays intersectPacket() takes at once.
-    static constexpr int kPacketRays = 8;
+    static constexpr int kPacketRays = 16;
     /// Whether intersectPacket() traces rays together, faster than one at a
     /// time: the integrator then asks rows of camera rays in packets. False
     /// by default (and for the ray recorder, which follows each ray tree in

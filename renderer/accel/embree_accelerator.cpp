@@ -8,6 +8,7 @@
 #include <cstring>
 #include <exception>
 #include <stdexcept>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -61,6 +62,8 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, const AccelOptions& opt
     rtcSetSceneFlags(m_scene.get(), options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
     rtcSetSceneBuildQuality(m_scene.get(), quality);
     m_device.check("scene setup");
+    m_nativePackets16 =
+        rtcGetDeviceProperty(m_device.get(), RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) != 0;
 
     m_user.options = options.intersect;
     addUserGeometry(scene, quality);
@@ -268,8 +271,9 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
 
 namespace {
 
-/// Ray r into lane k of a packet, with no hit yet (rtcIntersect8's input).
-void storeLane(const RTCRay& r, int k, RTCRayHit8& p) {
+/// Ray r into lane k of a packet, with no hit yet (rtcIntersect8/16's input).
+template <class Packet>
+void storeLane(const RTCRay& r, int k, Packet& p) {
     p.ray.org_x[k] = r.org_x;
     p.ray.org_y[k] = r.org_y;
     p.ray.org_z[k] = r.org_z;
@@ -286,7 +290,8 @@ void storeLane(const RTCRay& r, int k, RTCRayHit8& p) {
 }
 
 /// Lane k's answer as a single ray's record: the fields decode() reads.
-RTCRayHit laneAnswer(const RTCRayHit8& p, int k) {
+template <class Packet>
+RTCRayHit laneAnswer(const Packet& p, int k) {
     RTCRayHit h{};
     h.ray.tfar = p.ray.tfar[k];
     h.hit.u = p.hit.u[k];
@@ -296,19 +301,49 @@ RTCRayHit laneAnswer(const RTCRayHit8& p, int k) {
     return h;
 }
 
+void intersectLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRayHit8* p) {
+    rtcIntersect8(valid, scene, ctx, p);
+}
+void intersectLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRayHit16* p) {
+    rtcIntersect16(valid, scene, ctx, p);
+}
+
+/// The lane count of an Embree packet type.
+template <class Packet>
+constexpr int kLanes = sizeof(std::declval<Packet&>().ray.tfar) / sizeof(float);
+
 }  // namespace
 
 void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
                                         int count, std::optional<Hit>* out) const {
+    static_assert(kPacketRays == 16, "at most one rtcIntersect16 packet");
     if (count < 2 || count > kPacketRays) {
         Accelerator::intersectPacket(rays, tMin, tMax, count, out);
         return;
     }
-    static_assert(kPacketRays == 8, "one rtcIntersect8 packet");
-    alignas(32) RTCRayHit8 packet;
-    alignas(32) int valid[8];
-    EmbreeQueryContext lanes[8];
-    for (int k = 0; k < 8; ++k) {
+    if (m_nativePackets16) {
+        tracePacket<RTCRayHit16>(rays, tMin, tMax, count, out);
+        return;
+    }
+    // Without AVX-512 Embree would split a 16-wide packet itself (its
+    // stream path); two 8-wide packets are its native width.
+    for (int i = 0; i < count; i += 8) {
+        const int n = std::min(8, count - i);
+        if (n == 1)
+            out[i] = intersect(rays[i], tMin[i], tMax[i]);
+        else
+            tracePacket<RTCRayHit8>(rays + i, tMin + i, tMax + i, n, out + i);
+    }
+}
+
+template <class Packet>
+void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const double* tMax,
+                                    int count, std::optional<Hit>* out) const {
+    constexpr int K = kLanes<Packet>;
+    alignas(64) Packet packet;
+    alignas(64) int valid[K];
+    EmbreeQueryContext lanes[K];
+    for (int k = 0; k < K; ++k) {
         RTCRay r{};  // an inactive lane: zeros, never read by Embree
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
@@ -318,7 +353,7 @@ void EmbreeAccelerator::intersectPacket(const Ray* rays, const double* tMin, con
     EmbreeQueryContext ctx;
     initContext(ctx, nullptr, 0, 0);
     ctx.lanes = lanes;
-    rtcIntersect8(valid, m_scene.get(), &ctx.rtc, &packet);
+    intersectLanes(valid, m_scene.get(), &ctx.rtc, &packet);
     for (int k = 0; k < count; ++k) {
         if (valid[k] == 0) {
             out[k] = std::nullopt;  // as intersect() answers a ray it cannot trace

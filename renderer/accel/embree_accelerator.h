@@ -47,12 +47,14 @@ public:
     /// tested as ever (Shape::revisit names no mesh).
     std::optional<Hit> intersect(const Ray& ray, double tMin, double tMax,
                                  Departure from) const override;
-    /// One rtcIntersect8 packet, each lane's analytic shapes tested with its
-    /// exact double ray and each lane's triangle hit near an edge resolved
-    /// as intersect() resolves it: the same answers as intersect(). (Embree
-    /// 3.13's packet triangle test gives its single-ray test's t, u, v and
-    /// Ng bit for bit: measured on 1.6 M rays aimed at vertices, edges and
-    /// anywhere, SSE2 to AVX-512, robust or not; docs/benchmarks.md.)
+    /// One rtcIntersect16 packet where the device traces 16 rays natively
+    /// (AVX-512), else up to two rtcIntersect8 packets; each lane's analytic
+    /// shapes tested with its exact double ray and each lane's triangle hit
+    /// near an edge resolved as intersect() resolves it: the same answers as
+    /// intersect(). (Embree 3.13's packet triangle test gives its single-ray
+    /// test's t, u, v and Ng bit for bit: measured on 1.6 M rays aimed at
+    /// vertices, edges and anywhere, SSE2 to AVX-512, robust or not;
+    /// docs/benchmarks.md.)
     void intersectPacket(const Ray* rays, const double* tMin, const double* tMax, int count,
                          std::optional<Hit>* out) const override;
     bool tracesPackets() const override { return true; }
@@ -109,6 +111,11 @@ private:
     /// test (see the hinted occluded()); names it in hint.primitive.
     [[gnu::noinline]] bool answeredByHint(const Ray& ray, double tMin, double tMax, Departure from,
                                           OcclusionHint& hint) const;
+    /// intersectPacket()'s work for one Embree packet type (RTCRayHit8 or
+    /// RTCRayHit16), count <= its lanes.
+    template <class Packet>
+    void tracePacket(const Ray* rays, const double* tMin, const double* tMax, int count,
+                     std::optional<Hit>* out) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 
@@ -126,6 +133,7 @@ private:
     std::vector<const Shape*> m_shapes;  ///< Scene::objects' shapes, for edge hits
     EdgeHitContext m_edgeHits;
     double m_buildSeconds = 0;
+    bool m_nativePackets16 = false;  ///< the device traces rtcIntersect16 natively
 };
 
 }  // namespace raylab

@@ -564,12 +564,14 @@ bool sameHit(const std::optional<Hit>& a, const std::optional<Hit>& b) {
 }  // namespace
 
 TEST_CASE("embree: a packet's hits are intersect()'s, lane by lane") {
-    // Bundles of 1-8 rays: neighbours from one eye (as a row of camera rays),
+    // Bundles of 1-16 rays: neighbours from one eye (as a row of camera rays),
     // rays aimed exactly at shared quad edges and corners and at the ties,
     // random unrelated rays, and lanes that cannot be traced (NaN, an empty
     // interval), in every position of the packet.
-    // Every ISA: an SSE device emulates rtcIntersect8 and calls back ray by
-    // ray, so the callbacks find each lane by its ray id, not its position.
+    // Every ISA: the default device on an AVX-512 CPU traces one 16-wide
+    // packet, the others two 8-wide ones; an SSE device emulates
+    // rtcIntersect8 and calls back ray by ray, so the callbacks find each
+    // lane by its ray id, not its position.
     const Scene scene = packetScene();
     NaiveAccelerator naive(scene, {});
     CHECK_FALSE(naive.tracesPackets());
@@ -580,9 +582,9 @@ TEST_CASE("embree: a packet's hits are intersect()'s, lane by lane") {
         Rng rng(5);
         int hits = 0, ties = 0;
         for (int n = 0; n < 3000; ++n) {
-            const int count = 1 + n % 8;
-            Ray rays[8];
-            double tMin[8], tMax[8];
+            const int count = 1 + n % Accelerator::kPacketRays;  // 16-wide, or two 8-wide
+            Ray rays[Accelerator::kPacketRays];
+            double tMin[Accelerator::kPacketRays], tMax[Accelerator::kPacketRays];
             const Vec3 eye = rng.point(-3, 3) + Vec3{0, 0, 14};
             for (int k = 0; k < count; ++k) {
                 Vec3 target;
@@ -598,7 +600,7 @@ TEST_CASE("embree: a packet's hits are intersect()'s, lane by lane") {
             }
             if (n % 7 == 3) rays[n % count].d.x = std::numeric_limits<double>::quiet_NaN();
             if (n % 11 == 5) tMax[n % count] = tMin[n % count];
-            std::optional<Hit> packet[8];
+            std::optional<Hit> packet[Accelerator::kPacketRays];
             embree.intersectPacket(rays, tMin, tMax, count, packet);
             for (int k = 0; k < count; ++k) {
                 const std::optional<Hit> single = embree.intersect(rays[k], tMin[k], tMax[k]);
@@ -614,12 +616,24 @@ TEST_CASE("embree: a packet's hits are intersect()'s, lane by lane") {
     }
 }
 
+namespace {
+
+void intersectPacketOf(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRayHit8* p) {
+    rtcIntersect8(valid, scene, ctx, p);
+}
+void intersectPacketOf(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRayHit16* p) {
+    rtcIntersect16(valid, scene, ctx, p);
+}
+
+}  // namespace
+
 TEST_CASE("embree: the packet triangle test is the single-ray test, bit for bit") {
     // What lets triangle meshes into packets at all: for every ISA Embree
-    // may pick, rtcIntersect8 reports the same triangle, t, u, v and Ng as
-    // rtcIntersect1, also for rays through vertices and edges (where a
-    // rounding difference would move a hit across the edge band), robust
-    // scene flag or not.
+    // may pick, rtcIntersect8 and rtcIntersect16 (native with AVX-512, split
+    // by Embree's stream path elsewhere) report the same triangle, t, u, v
+    // and Ng as rtcIntersect1, also for rays through vertices and edges
+    // (where a rounding difference would move a hit across the edge band),
+    // robust scene flag or not.
     Rng meshRng(4);
     Scene scene;
     scene.materials.resize(1);
@@ -634,6 +648,64 @@ TEST_CASE("embree: the packet triangle test is the single-ray test, bit for bit"
         for (const Vec3& p : mesh.positions) targets.push_back(p);  // vertices
     }
     const auto sameBits = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    // 40,000 rays a packet width: `Packet` is RTCRayHit8 or RTCRayHit16.
+    const auto compare = [&](const EmbreeAccelerator& embree, auto packetType, int& hits,
+                             int& differ) {
+        using Packet = decltype(packetType);
+        constexpr int K = sizeof(packetType.ray.tfar) / sizeof(float);
+        Rng rng(10);
+        for (int n = 0; n < 40000 / K; ++n) {
+            alignas(64) Packet packet;
+            alignas(64) int valid[K];
+            RTCRayHit single[K];
+            const Vec3 eye = rng.point(-14, 14) + Vec3{0, 0, 20};
+            for (int k = 0; k < K; ++k) {
+                const Vec3 target = n % 4 == 3 ? rng.point(-14, 14) : targets[rng.next() % targets.size()];
+                RTCRay r{};
+                REQUIRE(embree.toEmbreeRay(Ray{eye, target - eye}, 0, kInf, r));
+                single[k] = RTCRayHit{};
+                single[k].ray = r;
+                single[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                packet.ray.org_x[k] = r.org_x;
+                packet.ray.org_y[k] = r.org_y;
+                packet.ray.org_z[k] = r.org_z;
+                packet.ray.dir_x[k] = r.dir_x;
+                packet.ray.dir_y[k] = r.dir_y;
+                packet.ray.dir_z[k] = r.dir_z;
+                packet.ray.tnear[k] = r.tnear;
+                packet.ray.tfar[k] = r.tfar;
+                packet.ray.time[k] = 0;
+                packet.ray.mask[k] = r.mask;
+                packet.ray.id[k] = 0;
+                packet.ray.flags[k] = 0;
+                packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                valid[k] = -1;
+            }
+            for (int k = 0; k < K; ++k) {
+                RTCIntersectContext ctx;
+                rtcInitIntersectContext(&ctx);
+                rtcIntersect1(embree.rtcHandle(), &ctx, &single[k]);
+            }
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            intersectPacketOf(valid, embree.rtcHandle(), &ctx, &packet);
+            for (int k = 0; k < K; ++k) {
+                const RTCRayHit& s = single[k];
+                const bool hit = s.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                hits += hit;
+                const bool same =
+                    s.hit.geomID == packet.hit.geomID[k] &&
+                    (!hit || (s.hit.primID == packet.hit.primID[k] &&
+                              sameBits(s.ray.tfar, packet.ray.tfar[k]) &&
+                              sameBits(s.hit.u, packet.hit.u[k]) &&
+                              sameBits(s.hit.v, packet.hit.v[k]) &&
+                              sameBits(s.hit.Ng_x, packet.hit.Ng_x[k]) &&
+                              sameBits(s.hit.Ng_y, packet.hit.Ng_y[k]) &&
+                              sameBits(s.hit.Ng_z, packet.hit.Ng_z[k])));
+                differ += !same;
+            }
+        }
+    };
     for (const std::string isa : {"", "isa=sse2", "isa=sse4.2", "isa=avx2"}) {
         for (bool robust : {false, true}) {
             CAPTURE(isa);
@@ -641,61 +713,13 @@ TEST_CASE("embree: the packet triangle test is the single-ray test, bit for bit"
             AccelOptions options;
             options.robust = robust;
             EmbreeAccelerator embree(scene, options, isa);
-            Rng rng(10);
-            int hits = 0, differ = 0;
-            for (int n = 0; n < 5000; ++n) {
-                alignas(32) RTCRayHit8 packet;
-                alignas(32) int valid[8];
-                RTCRayHit single[8];
-                const Vec3 eye = rng.point(-14, 14) + Vec3{0, 0, 20};
-                for (int k = 0; k < 8; ++k) {
-                    const Vec3 target = n % 4 == 3 ? rng.point(-14, 14) : targets[rng.next() % targets.size()];
-                    RTCRay r{};
-                    REQUIRE(embree.toEmbreeRay(Ray{eye, target - eye}, 0, kInf, r));
-                    single[k] = RTCRayHit{};
-                    single[k].ray = r;
-                    single[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                    packet.ray.org_x[k] = r.org_x;
-                    packet.ray.org_y[k] = r.org_y;
-                    packet.ray.org_z[k] = r.org_z;
-                    packet.ray.dir_x[k] = r.dir_x;
-                    packet.ray.dir_y[k] = r.dir_y;
-                    packet.ray.dir_z[k] = r.dir_z;
-                    packet.ray.tnear[k] = r.tnear;
-                    packet.ray.tfar[k] = r.tfar;
-                    packet.ray.time[k] = 0;
-                    packet.ray.mask[k] = r.mask;
-                    packet.ray.id[k] = 0;
-                    packet.ray.flags[k] = 0;
-                    packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-                    valid[k] = -1;
-                }
-                for (int k = 0; k < 8; ++k) {
-                    RTCIntersectContext ctx;
-                    rtcInitIntersectContext(&ctx);
-                    rtcIntersect1(embree.rtcHandle(), &ctx, &single[k]);
-                }
-                RTCIntersectContext ctx;
-                rtcInitIntersectContext(&ctx);
-                rtcIntersect8(valid, embree.rtcHandle(), &ctx, &packet);
-                for (int k = 0; k < 8; ++k) {
-                    const RTCRayHit& s = single[k];
-                    const bool hit = s.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                    hits += hit;
-                    const bool same =
-                        s.hit.geomID == packet.hit.geomID[k] &&
-                        (!hit || (s.hit.primID == packet.hit.primID[k] &&
-                                  sameBits(s.ray.tfar, packet.ray.tfar[k]) &&
-                                  sameBits(s.hit.u, packet.hit.u[k]) &&
-                                  sameBits(s.hit.v, packet.hit.v[k]) &&
-                                  sameBits(s.hit.Ng_x, packet.hit.Ng_x[k]) &&
-                                  sameBits(s.hit.Ng_y, packet.hit.Ng_y[k]) &&
-                                  sameBits(s.hit.Ng_z, packet.hit.Ng_z[k])));
-                    differ += !same;
-                }
-            }
-            CHECK(differ == 0);
-            CHECK(hits > 30000);
+            int hits8 = 0, differ8 = 0, hits16 = 0, differ16 = 0;
+            compare(embree, RTCRayHit8{}, hits8, differ8);
+            compare(embree, RTCRayHit16{}, hits16, differ16);
+            CHECK(differ8 == 0);
+            CHECK(differ16 == 0);
+            CHECK(hits8 > 30000);
+            CHECK(hits16 > 30000);
         }
     }
 }
@@ -728,9 +752,9 @@ TEST_CASE("embree: packets with native triangles answer as intersect(), edges in
         Rng rng(9);
         int triangleHits = 0;
         for (int n = 0; n < 4000; ++n) {
-            const int count = 2 + n % 7;
-            Ray rays[8];
-            double tMin[8], tMax[8];
+            const int count = 2 + n % (Accelerator::kPacketRays - 1);
+            Ray rays[Accelerator::kPacketRays];
+            double tMin[Accelerator::kPacketRays], tMax[Accelerator::kPacketRays];
             const Vec3 eye = rng.point(-14, 14) + Vec3{0, 0, 8};
             for (int k = 0; k < count; ++k) {
                 const Vec3 target = n % 3 == 2 ? rng.point(-12, 12)
@@ -740,7 +764,7 @@ TEST_CASE("embree: packets with native triangles answer as intersect(), edges in
                 tMin[k] = 1e-9;
                 tMax[k] = std::numeric_limits<double>::infinity();
             }
-            std::optional<Hit> packet[8];
+            std::optional<Hit> packet[Accelerator::kPacketRays];
             embree.intersectPacket(rays, tMin, tMax, count, packet);
             for (int k = 0; k < count; ++k) {
                 const std::optional<Hit> single = embree.intersect(rays[k], tMin[k], tMax[k]);

@@ -284,18 +284,19 @@ TEST_CASE("cut-outs: packets of rays see the holes as single rays do") {
     CHECK(embree.tracesPackets());
     SplitMix64 rng(3);
     int floorHits = 0, maskHits = 0;
+    constexpr int kLanes = Accelerator::kPacketRays;  // one full packet
     for (int n = 0; n < 500; ++n) {
-        Ray rays[8];
-        double tMin[8], tMax[8];
+        Ray rays[kLanes];
+        double tMin[kLanes], tMax[kLanes];
         const double y = rng.uniform(0, 1);
-        for (int k = 0; k < 8; ++k) {
+        for (int k = 0; k < kLanes; ++k) {
             rays[k] = Ray{Vec3{rng.uniform(-0.5, 1.5), y, 5}, Vec3{rng.uniform(-0.2, 0.2), 0, -1}};
             tMin[k] = 0;
             tMax[k] = std::numeric_limits<double>::infinity();
         }
-        std::optional<Hit> packet[8];
-        embree.intersectPacket(rays, tMin, tMax, 8, packet);
-        for (int k = 0; k < 8; ++k) {
+        std::optional<Hit> packet[kLanes];
+        embree.intersectPacket(rays, tMin, tMax, kLanes, packet);
+        for (int k = 0; k < kLanes; ++k) {
             const std::optional<Hit> single = embree.intersect(rays[k], tMin[k], tMax[k]);
             REQUIRE(packet[k].has_value() == single.has_value());
             if (!single) continue;
