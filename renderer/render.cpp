@@ -67,10 +67,12 @@ uint64_t pixelSeed(uint64_t seed, uint64_t pixel) {
 }
 
 /// One camera sample through (px, py). `given`, when set, is its camera ray
-/// and that ray's first hit, already asked of the accelerator (a packet).
+/// and that ray's first hit, already asked of the accelerator (a packet),
+/// and the hit prepared up to its feelers (or null).
 struct GivenCameraRay {
     const Ray& ray;
     const std::optional<Hit>& hit;
+    const PreparedHit* prepared;
 };
 
 Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
@@ -80,7 +82,7 @@ Sample traceSample(const WhittedIntegrator& integrator, const Scene& scene,
     const Ray ray = given ? given->ray : scene.camera.generateRay(px, py, opt.width, opt.height);
     SampleRays spent;
     s.c = sanitize(integrator.Li(ray, tc.rays, &s.first, spent, &tc.shadows,
-                                 given ? &given->hit : nullptr),
+                                 given ? &given->hit : nullptr, given ? given->prepared : nullptr),
                    tc.nonFinite);
     tc.cappedSamples += spent.capped;
     tc.maxSampleRays = std::max(tc.maxSampleRays, spent.traced);
@@ -264,8 +266,9 @@ void renderRowInPackets(const WhittedIntegrator& integrator, const Scene& scene,
     int count = 0;
     const auto trace = [&] {
         integrator.cameraHits(rays, count, hits);
+        integrator.prepareCameraHits(rays, hits, count, tc.prepared);
         for (int j = 0; j < count; ++j) {
-            const GivenCameraRay given{rays[j], hits[j]};
+            const GivenCameraRay given{rays[j], hits[j], tc.prepared.lane(j)};
             pixels[owner[j]].add(traceSample(integrator, scene, opt, 0, 0, tc, &given), film,
                                  film.index(x0 + owner[j], y), opt);
         }
@@ -379,8 +382,9 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
             for (int k = 0; k < count; ++k)
                 rays[k] = m_scene.camera.generateRay(i0 + k, r.y0, m_options.width, m_options.height);
             m_integrator->cameraHits(rays, count, hits);
+            m_integrator->prepareCameraHits(rays, hits, count, counters.prepared);
             for (int k = 0; k < count; ++k) {
-                const GivenCameraRay given{rays[k], hits[k]};
+                const GivenCameraRay given{rays[k], hits[k], counters.prepared.lane(k)};
                 store(i0 + k, traceSample(*m_integrator, m_scene, m_options, i0 + k, r.y0, counters,
                                           &given));
             }

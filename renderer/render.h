@@ -41,13 +41,15 @@ static_assert(sizeof(CornerSample) == 32, "a corner stays 32 bytes");
 
 /// Ray counts and replaced non-finite samples of one worker (or the sum of
 /// several: integer sums and a maximum, the same whatever the split), and the
-/// shadow cache its ray trees share (renderer/shadow_cache.h).
+/// shadow cache its ray trees share (renderer/shadow_cache.h) and the camera
+/// hits it prepares, packet after packet (renderer/prepared_hits.h).
 struct WorkCounters {
     RayCounters rays;
     uint64_t nonFinite = 0;
     uint64_t cappedSamples = 0;  ///< samples whose ray tree the per-sample cap cut short
     uint64_t maxSampleRays = 0;  ///< the most rays one sample traced
     ShadowCache shadows;         ///< not summed: a per-worker speed aid
+    PreparedHits prepared;       ///< not summed: the worker's camera hits of one packet
 
     WorkCounters& operator+=(const WorkCounters& o);
 };

@@ -41,6 +41,8 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
     m_shadowHints = m_effects.has(kShadows) && accel.usesOcclusionHints(m_effects.filteredShadows);
+    m_prepareHits = m_effects.has(kShadows) && !m_effects.textures() && !m_shadowHints &&
+                    accel.tracesPackets();
     // One instantiation of trace<E> per effect combination, chosen once here.
     constexpr unsigned kKernels = 2 * kTextures;
     static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
@@ -72,14 +74,15 @@ double WhittedIntegrator::cameraTMin(const Ray& cameraRay) const {
 
 Color WhittedIntegrator::Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first,
                             SampleRays& spent, ShadowCache* shadows,
-                            const std::optional<Hit>* cameraHit) const {
+                            const std::optional<Hit>* cameraHit,
+                            const PreparedHit* prepared) const {
     if (!m_shadowHints) shadows = nullptr;
     if (shadows) shadows->prepare(m_scene.objects.size(), m_scene.lights.size(), m_options.maxDepth);
     TraceState state{counters, shadows, spent};
     // A given camera hit was asked with cameraHits' own near distance: start
     // has no use for another.
     const double tNear = cameraHit ? 0.0 : cameraTMin(cameraRay);
-    return (this->*m_kernel)(cameraRay, tNear, state, first, cameraHit);
+    return (this->*m_kernel)(cameraRay, tNear, state, first, cameraHit, prepared);
 }
 
 void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit>* out) const {
@@ -89,6 +92,53 @@ void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit
         tMax[i] = kInf;  // as trace asks
     }
     m_accel.intersectPacket(rays, tMin, tMax, count, out);
+}
+
+void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits,
+                                          int count, PreparedHits& out) const {
+    const size_t lights = m_scene.lights.size();
+    out.clear(lights);
+    if (!m_prepareHits) return;
+    constexpr int K = Accelerator::kPacketRays;
+    // Each hit as traceHit sees it (untextured kernels: normals only).
+    Vec3 normals[K];  // on the side the ray arrives from
+    bool feels[K];    // shadeLocal traces feelers from this hit
+    for (int k = 0; k < count; ++k) {
+        feels[k] = false;
+        if (!hits[k]) continue;
+        PreparedHit& h = out.prepare(k);
+        h.si = m_scene.surfaceAt(rays[k], *hits[k], m_options.accelOptions.intersect,
+                                 SurfaceDetail::Normals);
+        const SurfaceInteraction& si = h.si;
+        normals[k] = si.frontFace ? si.ns : -si.ns;
+        h.spawn.emplace(si.p, si.frontFace ? si.ng : -si.ng, si.span, m_options.spawn);
+        feels[k] = shadesLocally(m_scene.materials[si.material]);
+    }
+    // Per light, the feelers shadeLocal would trace, in one packet.
+    Ray feelers[K];
+    double tMin[K], tMax[K];
+    Departure from[K];
+    int lane[K];
+    Color answers[K];
+    for (size_t li = 0; li < lights; ++li) {
+        int n = 0;
+        for (int k = 0; k < count; ++k) {
+            if (!feels[k]) continue;
+            const PreparedHit& h = *out.lane(k);
+            const SurfaceInteraction& si = h.si;
+            const auto [toLight, far] = towards(m_scene.lights[li], si.p);
+            if (m_prune && !(dot(normals[k], normalize(toLight)) > 0)) continue;  // as shadeLocal
+            const SpawnedRay shadow = (*h.spawn)(toLight);
+            feelers[n] = shadow.ray;
+            tMin[n] = shadow.tMin;
+            tMax[n] = far;
+            from[n] = departure(si, toLight);
+            lane[n++] = k;
+        }
+        if (n == 0) continue;
+        m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers);
+        for (int j = 0; j < n; ++j) out.feelers(lane[j])[li] = answers[j];
+    }
 }
 
 bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
@@ -105,19 +155,21 @@ bool WhittedIntegrator::mayBranch(SampleRays& spent) const {
 
 template <unsigned E>
 Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& state,
-                               FirstHit* first, const std::optional<Hit>* cameraHit) const {
+                               FirstHit* first, const std::optional<Hit>* cameraHit,
+                               const PreparedHit* prepared) const {
     // No footprint yet: trace computes the camera ray's at its hit (a miss
     // needs none) from the unit direction it has there.
     if (!cameraHit)
         return trace<E>(cameraRay, tNear, Departure{}, 1, RayType::Camera, 1.0, state, first, nullptr);
     countRay(state, RayType::Camera, 1);
-    return traceHit<E>(cameraRay, *cameraHit, 1, RayType::Camera, 1.0, state, first, nullptr);
+    return traceHit<E>(cameraRay, *cameraHit, 1, RayType::Camera, 1.0, state, first, nullptr,
+                       prepared);
 }
 
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
-                                    int depth, TraceState& state) const {
+                                    int depth, TraceState& state, const Color* answered) const {
     // Radiance saturates at the largest double (shading/radiance_range.h):
     // an overflow is as bright as can be, never Inf, never NaN, never black.
     const Color ka = m.ambientFollowsDiffuse ? diffuseAt(si, m) : m.ka;
@@ -125,22 +177,13 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
     if constexpr ((E & kShadows) == 0) {
         return result;
     } else {
-        // SPD counts shadow rays even from surfaces without a local term.
-        if (m_prune && !m_options.spd && !m.hasLocalShading()) return result;
+        if (!shadesLocally(m)) return result;
         const Color diffuse = diffuseAt(si, m);
         ShadowCache::Receiver receiver{};
         if (state.shadows) receiver = state.shadows->receiver(si.object, depth);
         for (size_t li = 0; li < m_scene.lights.size(); ++li) {
             const Light& light = m_scene.lights[li];
-            Vec3 toLight;  // unnormalised: the shadow ray ends at the light (t = 1)
-            double tMax;
-            if (light.type == Light::Type::Point) {
-                toLight = light.position - si.p;
-                tMax = 1.0;
-            } else {
-                toLight = -light.direction;
-                tMax = kInf;
-            }
+            const auto [toLight, tMax] = towards(light, si.p);
             const Vec3 l = normalize(toLight);
             // No shadow ray when the normal faces away from the light. The
             // general kernel traces it anyway and then adds nothing, so both
@@ -148,34 +191,41 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
             const double nDotL = dot(n, l);
             const bool facing = nDotL > 0;
             if (m_prune && !facing) continue;
-            const SpawnedRay shadow = spawn(toLight);
-            const Departure from = departure(si, toLight);
             state.counters.count(RayType::Shadow, depth + 1);
             ++state.spent.traced;
-            // The occluders of earlier feelers from this surface are this
-            // one's first guesses (shadow_cache.h): less work, the same answer.
-            OcclusionHint hint;
-            ShadowCache::Slots slots{};
-            if (state.shadows) {
-                slots = ShadowCache::slots(receiver, li);
-                hint = slots.hint();
-            }
-            // Filtered shadows: the light arrives dimmed by the transmitters
-            // on the way (no refraction of the feeler: an approximation).
             Color arriving = light.intensity;
-            if (m_effects.filteredShadows) {
-                const Color through =
-                    state.shadows ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
-                                  : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
-                if (state.shadows) slots.remember(hint);
+            if (answered) {  // prepareCameraHits traced this feeler
+                const Color& through = answered[li];
                 if (through.isBlack() || !facing) continue;
-                arriving = saturated(arriving * saturated(through));
+                if (m_effects.filteredShadows) arriving = saturated(arriving * saturated(through));
             } else {
-                const bool blocked =
-                    state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
-                                  : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
-                if (state.shadows) slots.remember(hint);
-                if (blocked || !facing) continue;
+                const SpawnedRay shadow = spawn(toLight);
+                const Departure from = departure(si, toLight);
+                // The occluders of earlier feelers from this surface are this
+                // one's first guesses (shadow_cache.h): less work, the same answer.
+                OcclusionHint hint;
+                ShadowCache::Slots slots{};
+                if (state.shadows) {
+                    slots = ShadowCache::slots(receiver, li);
+                    hint = slots.hint();
+                }
+                // Filtered shadows: the light arrives dimmed by the transmitters
+                // on the way (no refraction of the feeler: an approximation).
+                if (m_effects.filteredShadows) {
+                    const Color through =
+                        state.shadows
+                            ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
+                            : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
+                    if (state.shadows) slots.remember(hint);
+                    if (through.isBlack() || !facing) continue;
+                    arriving = saturated(arriving * saturated(through));
+                } else {
+                    const bool blocked =
+                        state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
+                                      : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
+                    if (state.shadows) slots.remember(hint);
+                    if (blocked || !facing) continue;
+                }
             }
             result += lambert(diffuse, arriving, nDotL);
             if constexpr ((E & kHighlights) != 0) {
@@ -195,13 +245,13 @@ Color WhittedIntegrator::trace(const Ray& ray, double tMin, Departure from, int 
                                const Footprint<E>* carried) const {
     countRay(state, type, depth);
     return traceHit<E>(ray, m_accel.intersect(ray, tMin, kInf, from), depth, type, weight, state,
-                       first, carried);
+                       first, carried, nullptr);
 }
 
 template <unsigned E>
 Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit, int depth,
                                   RayType type, double weight, TraceState& state, FirstHit* first,
-                                  const Footprint<E>* carried) const {
+                                  const Footprint<E>* carried, const PreparedHit* prepared) const {
     if (!hit) return m_scene.background;
     if (type == RayType::Camera) state.counters.cameraHits++;
 
@@ -213,8 +263,10 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
         hasMaps = m_scene.materials[m_scene.objects[hit->object].materialOf(hit->prim)].maps.any();
         detail = hasMaps ? SurfaceDetail::Complete : SurfaceDetail::Derivatives;
     }
+    // A prepared camera hit (untextured kernels) comes with its record.
     SurfaceInteraction si =
-        m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
+        prepared ? prepared->si
+                 : m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
     // `entering` is false when the ray is inside the object (it hit the back
     // of the outward normal).
     const bool entering = si.frontFace;
@@ -257,8 +309,13 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
         }
     }
 
-    const RaySpawner spawn(si.p, ng, si.span, m_options.spawn);  // one offset for all of this hit's rays
-    Color result = shadeLocal<E>(si, m, n, spawn, -dir, depth, state);
+    // One offset for all of this hit's rays (a prepared hit's is made).
+    LateValue<RaySpawner> ownSpawn;
+    const RaySpawner& spawn =
+        prepared ? *prepared->spawn
+                 : ownSpawn.emplace(si.p, ng, si.span, m_options.spawn);
+    Color result =
+        shadeLocal<E>(si, m, n, spawn, -dir, depth, state, prepared ? prepared->feelers : nullptr);
     if (depth >= m_options.maxDepth) return result;
 
     constexpr bool kAnySecondary = (E & (kReflection | kRefraction)) != 0;

@@ -14,6 +14,7 @@
 #include "geometry/spawn.h"
 #include "renderer/accel/accelerator.h"
 #include "renderer/effects.h"
+#include "renderer/prepared_hits.h"
 #include "renderer/render_options.h"
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
@@ -58,9 +59,12 @@ public:
     /// changes no answer, only how fast shadow rays are answered (unused
     /// where the accelerator can use no hint: Accelerator::usesOcclusionHints).
     /// `cameraHit`, when given, is the camera ray's first hit as the
-    /// accelerator answered it (cameraHits): it is not asked again.
+    /// accelerator answered it (cameraHits): it is not asked again; nor is
+    /// `prepared` (when given: that hit prepared by prepareCameraHits) shaded
+    /// again up to its feelers.
     Color Li(const Ray& cameraRay, RayCounters& counters, FirstHit* first, SampleRays& spent,
-             ShadowCache* shadows = nullptr, const std::optional<Hit>* cameraHit = nullptr) const;
+             ShadowCache* shadows = nullptr, const std::optional<Hit>* cameraHit = nullptr,
+             const PreparedHit* prepared = nullptr) const;
 
     /// The first hits of `count` (1..Accelerator::kPacketRays) camera rays,
     /// asked of the accelerator together (a packet): out[i] is what Li would
@@ -68,6 +72,17 @@ public:
     void cameraHits(const Ray* rays, int count, std::optional<Hit>* out) const;
     /// Whether cameraHits is worth calling (the accelerator traces packets).
     bool tracesPackets() const { return m_accel.tracesPackets(); }
+    /// \brief Shades the camera hits of a packet (cameraHits' answers) up to
+    ///   their shadow feelers, the feelers to each light asked of the
+    ///   accelerator together (Accelerator::shadowPacket): Li then takes lane
+    ///   k's (out.lane(k)) and brings back the same radiance, bit for bit.
+    /// \details Prepares nothing where packets of feelers do not apply or
+    ///   would not pay: no shadows, textured kernels (their optics need the
+    ///   ray's footprint), a scene whose feelers use the shadow cache (its
+    ///   guesses answer blocked feelers for less than a walk), an accelerator
+    ///   without packets.
+    void prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits, int count,
+                           PreparedHits& out) const;
 
 private:
     /// What one worker carries through a ray tree.
@@ -86,7 +101,7 @@ private:
 
     template <unsigned E>
     Color start(const Ray& cameraRay, double tNear, TraceState& state, FirstHit* first,
-                const std::optional<Hit>* cameraHit) const;
+                const std::optional<Hit>* cameraHit, const PreparedHit* prepared) const;
     /// One more ray of `type` at `depth`, in the render's counters and this sample's.
     static void countRay(TraceState& state, RayType type, int depth) {
         state.counters.count(type, depth);
@@ -97,20 +112,37 @@ private:
     Color trace(const Ray& ray, double tMin, Departure from, int depth, RayType type,
                 double weight, TraceState& state, FirstHit* first,
                 const Footprint<E>* carried) const;
-    /// The radiance a counted ray brings back from `hit` (the background for none).
-    /// Inlined into trace and start: the ray tree's hot path keeps one call per ray.
+    /// The radiance a counted ray brings back from `hit` (the background for
+    /// none); `prepared` (may be null) is that hit prepared by
+    /// prepareCameraHits. Inlined into trace and start: the ray tree's hot
+    /// path keeps one call per ray.
     template <unsigned E>
     [[gnu::always_inline]] inline Color traceHit(const Ray& ray, const std::optional<Hit>& hit,
                                                  int depth, RayType type, double weight,
                                                  TraceState& state, FirstHit* first,
-                                                 const Footprint<E>* carried) const;
+                                                 const Footprint<E>* carried,
+                                                 const PreparedHit* prepared) const;
     /// The camera ray's lower bound: the near plane (NFF's hither) is a
     /// distance along the view axis.
     double cameraTMin(const Ray& cameraRay) const;
+    /// Ambient, and each light's diffuse and highlight where its feeler
+    /// gets through; `answered` (may be null) holds the feelers' answers
+    /// by light (PreparedHit::feelers), which are then not traced.
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     TraceState& state) const;
+                     TraceState& state, const Color* answered) const;
+    /// Whether shadeLocal traces feelers from a surface of optics `m` at all
+    /// (SPD counts them even from surfaces without a local term).
+    bool shadesLocally(const SurfaceOptics& m) const {
+        return !m_prune || m_options.spd || m.hasLocalShading();
+    }
+    /// The direction from p to `light` (unnormalised: a point light's feeler
+    /// ends at the light, t = 1) and the feeler's tMax.
+    static std::pair<Vec3, double> towards(const Light& light, const Vec3& p) {
+        if (light.type == Light::Type::Point) return {light.position - p, 1.0};
+        return {-light.direction, std::numeric_limits<double>::infinity()};
+    }
     /// What a ray leaving hit `si` in direction `dir` departs from: the hit's
     /// object where no such ray can meet it again (m_revisit), else nothing.
     Departure departure(const SurfaceInteraction& si, const Vec3& dir) const {
@@ -123,7 +155,8 @@ private:
     bool mayBranch(SampleRays& spent) const;
 
     using Kernel = Color (WhittedIntegrator::*)(const Ray&, double, TraceState&, FirstHit*,
-                                                const std::optional<Hit>*) const;
+                                                const std::optional<Hit>*,
+                                                const PreparedHit*) const;
     /// One kernel per effect combination: entry i is start<i>.
     template <unsigned... E>
     static constexpr auto kernelTable(std::integer_sequence<unsigned, E...>);
@@ -134,6 +167,7 @@ private:
     EffectSet m_effects;
     bool m_prune = true;  ///< skip zero-weight rays (off for the general kernel and SPD)
     bool m_shadowHints = false;  ///< the accelerator can use a ShadowCache's hints
+    bool m_prepareHits = false;  ///< prepareCameraHits prepares the hits (see there)
     /// Per object, which rays leaving it could meet it again (Shape::revisit;
     /// Any for every object where RenderOptions::departures does not apply).
     std::vector<Revisit> m_revisit;

@@ -109,6 +109,19 @@ public:
         (void)hint;
         return transmittance(ray, tMin, tMax, from);
     }
+    /// \brief What `count` (1..kPacketRays) shadow feelers bring back, asked
+    ///   together (the feelers of a packet's camera hits to one light): out[i]
+    ///   is exactly transmittance(rays[i], tMin[i], tMax[i], from[i]) where
+    ///   `filtered`, else occluded(...) as black (blocked) or white. For
+    ///   accelerators that trace packets (tracesPackets); the default asks one
+    ///   feeler at a time.
+    virtual void shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
+                              const Departure* from, int count, bool filtered, Color* out) const {
+        for (int i = 0; i < count; ++i)
+            out[i] = filtered ? transmittance(rays[i], tMin[i], tMax[i], from[i])
+                              : occluded(rays[i], tMin[i], tMax[i], from[i]) ? Color{}
+                                                                             : Color(1.0);
+    }
     /// "embree" or "naive".
     virtual std::string name() const = 0;
     /// Wall-clock seconds the constructor spent building the structure

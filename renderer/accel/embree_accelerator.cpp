@@ -8,7 +8,6 @@
 #include <cstring>
 #include <exception>
 #include <stdexcept>
-#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -301,6 +300,30 @@ RTCRayHit laneAnswer(const Packet& p, int k) {
     return h;
 }
 
+/// Ray r into lane k of an occlusion packet.
+template <class Packet>
+void storeOcclusionLane(const RTCRay& r, int k, Packet& p) {
+    p.org_x[k] = r.org_x;
+    p.org_y[k] = r.org_y;
+    p.org_z[k] = r.org_z;
+    p.dir_x[k] = r.dir_x;
+    p.dir_y[k] = r.dir_y;
+    p.dir_z[k] = r.dir_z;
+    p.tnear[k] = r.tnear;
+    p.tfar[k] = r.tfar;
+    p.time[k] = r.time;
+    p.mask[k] = r.mask;
+    p.id[k] = r.id;
+    p.flags[k] = r.flags;
+}
+
+void occludeLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRay8* p) {
+    rtcOccluded8(valid, scene, ctx, p);
+}
+void occludeLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRay16* p) {
+    rtcOccluded16(valid, scene, ctx, p);
+}
+
 void intersectLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRayHit8* p) {
     rtcIntersect8(valid, scene, ctx, p);
 }
@@ -310,7 +333,15 @@ void intersectLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, 
 
 /// The lane count of an Embree packet type.
 template <class Packet>
-constexpr int kLanes = sizeof(std::declval<Packet&>().ray.tfar) / sizeof(float);
+constexpr int kLanes = 0;
+template <>
+constexpr int kLanes<RTCRayHit8> = 8;
+template <>
+constexpr int kLanes<RTCRayHit16> = 16;
+template <>
+constexpr int kLanes<RTCRay8> = 8;
+template <>
+constexpr int kLanes<RTCRay16> = 16;
 
 }  // namespace
 
@@ -366,6 +397,66 @@ void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const d
         if (out[k] && answer.hit.geomID != m_userGeomId &&
             nearTriangleEdge(answer.hit.u, answer.hit.v))
             out[k] = resolveEdgeHit(m_edgeHits, rays[k], tMin[k], tMax[k], *out[k]);
+    }
+}
+
+void EmbreeAccelerator::shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                     const Departure* from, int count, bool filtered,
+                                     Color* out) const {
+    static_assert(kPacketRays == 16, "at most one rtcOccluded16 packet");
+    if (count < 2 || count > kPacketRays) {
+        Accelerator::shadowPacket(rays, tMin, tMax, from, count, filtered, out);
+        return;
+    }
+    if (m_nativePackets16) {
+        occludePacket<RTCRay16>(rays, tMin, tMax, from, count, filtered, out);
+        return;
+    }
+    for (int i = 0; i < count; i += 8) {
+        const int n = std::min(8, count - i);
+        if (n == 1)
+            Accelerator::shadowPacket(rays + i, tMin + i, tMax + i, from + i, 1, filtered, out + i);
+        else
+            occludePacket<RTCRay8>(rays + i, tMin + i, tMax + i, from + i, n, filtered, out + i);
+    }
+}
+
+template <class Packet>
+void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const double* tMax,
+                                      const Departure* from, int count, bool filtered,
+                                      Color* out) const {
+    constexpr int K = kLanes<Packet>;
+    // transmittance() without an active surface filter is occluded().
+    const bool collect = filtered && m_filter.active();
+    alignas(64) Packet packet;
+    alignas(64) int valid[K];
+    EmbreeQueryContext lanes[K];
+    TransmittanceAccumulator crossings[K];
+    for (int k = 0; k < K; ++k) {
+        RTCRay r{};  // an inactive lane: zeros, never read by Embree
+        valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
+        r.id = unsigned(k);  // how the callbacks find the lane's exact context
+        storeOcclusionLane(r, k, packet);
+        if (k < count) {
+            initContext(lanes[k], &rays[k], tMin[k], tMax[k], from[k]);
+            if (collect) lanes[k].shadow = &crossings[k];
+        }
+    }
+    EmbreeQueryContext ctx;
+    initContext(ctx, nullptr, 0, 0);
+    ctx.lanes = lanes;
+    occludeLanes(valid, m_scene.get(), &ctx.rtc, &packet);
+    for (int k = 0; k < count; ++k) {
+        if (valid[k] == 0) {
+            out[k] = Color(1.0);  // an untraceable feeler is lit, as for one ray
+        } else if (packet.tfar[k] < 0.0f) {
+            out[k] = Color{};
+        } else if (collect) {
+            m_filter.countCrossings(crossings[k].size());
+            out[k] = crossings[k].product();
+        } else {
+            out[k] = Color(1.0);
+        }
     }
 }
 

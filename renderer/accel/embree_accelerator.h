@@ -75,6 +75,11 @@ public:
     /// Without a surface filter, occluded() with the hint as black or white.
     Color transmittance(const Ray& ray, double tMin, double tMax, Departure from,
                         OcclusionHint& hint) const override;
+    /// One rtcOccluded16 packet (two rtcOccluded8 without AVX-512), each
+    /// lane with its own exact context and, for filtered shadows, its own
+    /// crossings: each lane's answer is its single feeler's.
+    void shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
+                      const Departure* from, int count, bool filtered, Color* out) const override;
     std::string name() const override { return "embree"; }
     double buildSeconds() const override { return m_buildSeconds; }
     FilterCounts filterCounts() const override { return m_filter.counts(); }
@@ -116,6 +121,10 @@ private:
     template <class Packet>
     void tracePacket(const Ray* rays, const double* tMin, const double* tMax, int count,
                      std::optional<Hit>* out) const;
+    /// shadowPacket()'s work for one Embree packet type (RTCRay8 or RTCRay16).
+    template <class Packet>
+    void occludePacket(const Ray* rays, const double* tMin, const double* tMax,
+                       const Departure* from, int count, bool filtered, Color* out) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 

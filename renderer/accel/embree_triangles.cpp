@@ -31,10 +31,14 @@ void cullTriangleSide(const RTCFilterFunctionNArguments* args) {
 template <bool Occlusion>
 void filterTriangles(const RTCFilterFunctionNArguments* args) {
     const auto& g = *static_cast<const EmbreeTriangleGeometry*>(args->geometryUserPtr);
-    const EmbreeQueryContext& ctx = *reinterpret_cast<const EmbreeQueryContext*>(args->context);
+    const EmbreeQueryContext& query = *reinterpret_cast<const EmbreeQueryContext*>(args->context);
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
+        // A packet's lane has its own exact context (its filter and, for a
+        // filtered-shadow feeler, its own crossings), found by the ray's id.
+        const EmbreeQueryContext& ctx =
+            query.lanes ? query.lanes[RTCRayN_id(args->ray, n, i)] : query;
         const float dx = RTCRayN_dir_x(args->ray, n, i), dy = RTCRayN_dir_y(args->ray, n, i),
                     dz = RTCRayN_dir_z(args->ray, n, i);
         if (g.sides != Sidedness::Both) {
@@ -49,13 +53,14 @@ void filterTriangles(const RTCFilterFunctionNArguments* args) {
         if (!ctx.filter) continue;
         // A transmitter's candidate is a plain hit but in filtered shadows.
         if (!g.cutsOut && !(Occlusion && ctx.shadow)) continue;
-        const Ray ray = n == 1 && ctx.ray ? *ctx.ray
-                        : ctx.lanes       ? *ctx.lanes[RTCRayN_id(args->ray, n, i)].ray
-                                          : Ray{Vec3{RTCRayN_org_x(args->ray, n, i),
-                                                     RTCRayN_org_y(args->ray, n, i),
-                                                     RTCRayN_org_z(args->ray, n, i)} +
-                                                    g.origin,
-                                                Vec3{dx, dy, dz}};
+        // A single ray's context holds its exact ray (not an 8-wide query's:
+        // one context cannot describe its lanes), a lane's context its lane's.
+        const Ray ray = (n == 1 || query.lanes) && ctx.ray
+                            ? *ctx.ray
+                            : Ray{Vec3{RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i),
+                                       RTCRayN_org_z(args->ray, n, i)} +
+                                      g.origin,
+                                  Vec3{dx, dy, dz}};
         // Embree puts the candidate's distance in tfar while the filter runs.
         const Hit candidate{RTCRayN_tfar(args->ray, n, i), g.object,
                             g.triangle(RTCHitN_primID(args->hit, n, i)),

@@ -1,0 +1,70 @@
+#pragma once
+// Camera hits shaded up to their shadow feelers ahead of their ray trees
+// (WhittedIntegrator::prepareCameraHits). The feelers of neighbouring camera
+// hits towards one light are nearly parallel, so the accelerator answers
+// them together, as a packet, for less traversal than one at a time; each
+// answer is exactly the single feeler's, so Li computes the same radiance.
+// A worker keeps one PreparedHits and reuses it packet after packet.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "geometry/spawn.h"
+#include "renderer/accel/accelerator.h"
+#include "renderer/scene.h"
+#include "shading/color.h"
+
+namespace raylab {
+
+/// One camera hit, prepared: its surface record and, per light, what that
+/// light's feeler brought back (filtered shadows: the transmittance;
+/// otherwise black where blocked, white where lit). Only the feelers the
+/// integrator traces from this hit are set.
+struct PreparedHit {
+    SurfaceInteraction si;
+    std::optional<RaySpawner> spawn;  ///< the hit's spawned rays, as traceHit makes them
+    const Color* feelers = nullptr;   ///< indexed by light
+};
+
+/// The prepared camera hits of one packet of camera rays.
+class PreparedHits {
+public:
+    PreparedHits() = default;
+    /// A worker's scratch, valid for one packet: a copy (WorkCounters are
+    /// copied and summed) starts with no lane prepared.
+    PreparedHits(const PreparedHits&) {}
+    PreparedHits& operator=(const PreparedHits&) {
+        m_ready.fill(false);
+        return *this;
+    }
+
+    /// Lane k's prepared hit, or null (a miss, or nothing was prepared).
+    const PreparedHit* lane(int k) const { return m_ready[size_t(k)] ? &m_hits[size_t(k)] : nullptr; }
+
+    /// No lane prepared, room for the answers of `lights` lights per lane
+    /// (before a packet is prepared, or when none will be).
+    void clear(size_t lights) {
+        m_ready.fill(false);
+        m_lights = lights;
+        if (m_answers.size() < m_hits.size() * lights) m_answers.resize(m_hits.size() * lights);
+    }
+    /// Lane k is prepared: its surface record is to be filled in, its
+    /// feelers' answers go to feelers(k).
+    PreparedHit& prepare(int k) {
+        m_ready[size_t(k)] = true;
+        m_hits[size_t(k)].feelers = feelers(k);
+        return m_hits[size_t(k)];
+    }
+    /// Lane k's answers, by light.
+    Color* feelers(int k) { return m_answers.data() + size_t(k) * m_lights; }
+
+private:
+    std::array<PreparedHit, Accelerator::kPacketRays> m_hits;
+    std::array<bool, Accelerator::kPacketRays> m_ready{};
+    size_t m_lights = 0;
+    std::vector<Color> m_answers;  ///< lane-major: lane · lights + light
+};
+
+}  // namespace raylab
