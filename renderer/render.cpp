@@ -266,7 +266,7 @@ void renderRowInPackets(const WhittedIntegrator& integrator, const Scene& scene,
     int count = 0;
     const auto trace = [&] {
         integrator.cameraHits(rays, count, hits);
-        integrator.prepareCameraHits(rays, hits, count, tc.prepared);
+        integrator.prepareCameraHits(rays, hits, count, tc.prepared, &tc.shadows);
         for (int j = 0; j < count; ++j) {
             const GivenCameraRay given{rays[j], hits[j], tc.prepared.lane(j)};
             pixels[owner[j]].add(traceSample(integrator, scene, opt, 0, 0, tc, &given), film,
@@ -382,7 +382,7 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
             for (int k = 0; k < count; ++k)
                 rays[k] = m_scene.camera.generateRay(i0 + k, r.y0, m_options.width, m_options.height);
             m_integrator->cameraHits(rays, count, hits);
-            m_integrator->prepareCameraHits(rays, hits, count, counters.prepared);
+            m_integrator->prepareCameraHits(rays, hits, count, counters.prepared, &counters.shadows);
             for (int k = 0; k < count; ++k) {
                 const GivenCameraRay given{rays[k], hits[k], counters.prepared.lane(k)};
                 store(i0 + k, traceSample(*m_integrator, m_scene, m_options, i0 + k, r.y0, counters,

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "geometry/spawn.h"
+#include "geometry/triangle_mesh.h"
 #include "renderer/cancel.h"
 #include "renderer/late_value.h"
 #include "shading/brdf.h"
@@ -41,8 +42,20 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // included; SPD's procedure traces zero-weight reflection rays too.
     m_prune = !options.forceAllEffects;
     m_shadowHints = m_effects.has(kShadows) && accel.usesOcclusionHints(m_effects.filteredShadows);
-    m_prepareHits = m_effects.has(kShadows) && !m_effects.textures() && !m_shadowHints &&
-                    accel.tracesPackets();
+    // Feelers of camera hits in packets (prepareCameraHits). With the shadow
+    // cache in use only where triangles outnumber the analytic primitives:
+    // the cache names analytic occluders alone, and where they are the bulk
+    // of a scene its guesses, one at a time, beat packets (whole process,
+    // one thread, 9-15 rounds: balls, gears, rings --spd 0.948, 0.951,
+    // 0.941x with packets; the demo with opaque shadows 1.018x, mount 1.004x;
+    // docs/benchmarks.md, session 2026-12-06 18:09).
+    size_t triangles = 0;
+    for (const Object& o : scene.objects)
+        if (const TriangleMesh* mesh = o.shape ? o.shape->nativeTriangles() : nullptr)
+            triangles += mesh->triangleCount();
+    const bool mostlyTriangles = 2 * triangles > scene.primitiveCount();
+    m_prepareHits = m_effects.has(kShadows) && !m_effects.textures() && accel.tracesPackets() &&
+                    (!m_shadowHints || mostlyTriangles);
     // One instantiation of trace<E> per effect combination, chosen once here.
     constexpr unsigned kKernels = 2 * kTextures;
     static constexpr auto table = kernelTable(std::make_integer_sequence<unsigned, kKernels>());
@@ -95,10 +108,13 @@ void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit
 }
 
 void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits,
-                                          int count, PreparedHits& out) const {
+                                          int count, PreparedHits& out,
+                                          ShadowCache* shadows) const {
     const size_t lights = m_scene.lights.size();
     out.clear(lights);
     if (!m_prepareHits) return;
+    if (!m_shadowHints) shadows = nullptr;
+    if (shadows) shadows->prepare(m_scene.objects.size(), lights, m_options.maxDepth);
     constexpr int K = Accelerator::kPacketRays;
     // Each hit as traceHit sees it (untextured kernels: normals only).
     Vec3 normals[K];  // on the side the ray arrives from
@@ -120,6 +136,8 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
     Departure from[K];
     int lane[K];
     Color answers[K];
+    OcclusionHint hints[K];
+    ShadowCache::Slots slots[K];  // where each feeler's answer goes in the cache
     for (size_t li = 0; li < lights; ++li) {
         int n = 0;
         for (int k = 0; k < count; ++k) {
@@ -133,11 +151,19 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
             tMin[n] = shadow.tMin;
             tMax[n] = far;
             from[n] = departure(si, toLight);
+            if (shadows) {  // the guesses shadeLocal would take (a camera hit is at depth 1)
+                slots[n] = ShadowCache::slots(shadows->receiver(si.object, 1), li);
+                hints[n] = slots[n].hint();
+            }
             lane[n++] = k;
         }
         if (n == 0) continue;
-        m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers);
-        for (int j = 0; j < n; ++j) out.feelers(lane[j])[li] = answers[j];
+        m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers,
+                             shadows ? hints : nullptr);
+        for (int j = 0; j < n; ++j) {
+            out.feelers(lane[j])[li] = answers[j];
+            if (shadows) slots[j].remember(hints[j]);
+        }
     }
 }
 

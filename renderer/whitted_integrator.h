@@ -76,13 +76,13 @@ public:
     ///   their shadow feelers, the feelers to each light asked of the
     ///   accelerator together (Accelerator::shadowPacket): Li then takes lane
     ///   k's (out.lane(k)) and brings back the same radiance, bit for bit.
-    /// \details Prepares nothing where packets of feelers do not apply or
-    ///   would not pay: no shadows, textured kernels (their optics need the
-    ///   ray's footprint), a scene whose feelers use the shadow cache (its
-    ///   guesses answer blocked feelers for less than a walk), an accelerator
-    ///   without packets.
+    /// \details `shadows` is the calling thread's shadow cache, as for Li: a
+    ///   feeler its guess answers is not asked in the packet. Prepares nothing
+    ///   where packets of feelers do not apply: no shadows, textured kernels
+    ///   (their optics need the ray's footprint), an accelerator without
+    ///   packets.
     void prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits, int count,
-                           PreparedHits& out) const;
+                           PreparedHits& out, ShadowCache* shadows) const;
 
 private:
     /// What one worker carries through a ray tree.

@@ -112,15 +112,23 @@ public:
     /// \brief What `count` (1..kPacketRays) shadow feelers bring back, asked
     ///   together (the feelers of a packet's camera hits to one light): out[i]
     ///   is exactly transmittance(rays[i], tMin[i], tMax[i], from[i]) where
-    ///   `filtered`, else occluded(...) as black (blocked) or white. For
-    ///   accelerators that trace packets (tracesPackets); the default asks one
-    ///   feeler at a time.
+    ///   `filtered`, else occluded(...) as black (blocked) or white. `hints`
+    ///   (may be null) are the feelers' hints, used and updated as the hinted
+    ///   forms use and update one. For accelerators that trace packets
+    ///   (tracesPackets); the default asks one feeler at a time.
     virtual void shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
-                              const Departure* from, int count, bool filtered, Color* out) const {
-        for (int i = 0; i < count; ++i)
-            out[i] = filtered ? transmittance(rays[i], tMin[i], tMax[i], from[i])
-                              : occluded(rays[i], tMin[i], tMax[i], from[i]) ? Color{}
-                                                                             : Color(1.0);
+                              const Departure* from, int count, bool filtered, Color* out,
+                              OcclusionHint* hints = nullptr) const {
+        for (int i = 0; i < count; ++i) {
+            if (filtered)
+                out[i] = hints ? transmittance(rays[i], tMin[i], tMax[i], from[i], hints[i])
+                               : transmittance(rays[i], tMin[i], tMax[i], from[i]);
+            else
+                out[i] = (hints ? occluded(rays[i], tMin[i], tMax[i], from[i], hints[i])
+                                : occluded(rays[i], tMin[i], tMax[i], from[i]))
+                             ? Color{}
+                             : Color(1.0);
+        }
     }
     /// "embree" or "naive".
     virtual std::string name() const = 0;

@@ -401,61 +401,81 @@ void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const d
 }
 
 void EmbreeAccelerator::shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
-                                     const Departure* from, int count, bool filtered,
-                                     Color* out) const {
+                                     const Departure* from, int count, bool filtered, Color* out,
+                                     OcclusionHint* hints) const {
     static_assert(kPacketRays == 16, "at most one rtcOccluded16 packet");
     if (count < 2 || count > kPacketRays) {
-        Accelerator::shadowPacket(rays, tMin, tMax, from, count, filtered, out);
+        Accelerator::shadowPacket(rays, tMin, tMax, from, count, filtered, out, hints);
         return;
     }
     if (m_nativePackets16) {
-        occludePacket<RTCRay16>(rays, tMin, tMax, from, count, filtered, out);
+        occludePacket<RTCRay16>(rays, tMin, tMax, from, count, filtered, out, hints);
         return;
     }
     for (int i = 0; i < count; i += 8) {
         const int n = std::min(8, count - i);
+        OcclusionHint* h = hints ? hints + i : nullptr;
         if (n == 1)
-            Accelerator::shadowPacket(rays + i, tMin + i, tMax + i, from + i, 1, filtered, out + i);
+            Accelerator::shadowPacket(rays + i, tMin + i, tMax + i, from + i, 1, filtered, out + i, h);
         else
-            occludePacket<RTCRay8>(rays + i, tMin + i, tMax + i, from + i, n, filtered, out + i);
+            occludePacket<RTCRay8>(rays + i, tMin + i, tMax + i, from + i, n, filtered, out + i, h);
     }
 }
 
 template <class Packet>
 void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const double* tMax,
-                                      const Departure* from, int count, bool filtered,
-                                      Color* out) const {
+                                      const Departure* from, int count, bool filtered, Color* out,
+                                      OcclusionHint* hints) const {
     constexpr int K = kLanes<Packet>;
-    // transmittance() without an active surface filter is occluded().
+    // transmittance() without an active surface filter is occluded(), the
+    // only one that uses hints.
     const bool collect = filtered && m_filter.active();
+    if (collect) hints = nullptr;
     alignas(64) Packet packet;
     alignas(64) int valid[K];
     EmbreeQueryContext lanes[K];
     TransmittanceAccumulator crossings[K];
+    int traced = 0;
     for (int k = 0; k < K; ++k) {
         RTCRay r{};  // an inactive lane: zeros, never read by Embree
-        valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
+        valid[k] = 0;
+        if (k < count) {
+            out[k] = Color(1.0);  // an untraceable feeler is lit, as for one ray
+            if (toEmbreeRay(rays[k], tMin[k], tMax[k], r)) {
+                OcclusionHint* hint = hints ? &hints[k] : nullptr;
+                if (hint && (hint->primitive & hint->fallback) != OcclusionHint::kNone &&
+                    answeredByHint(rays[k], tMin[k], tMax[k], from[k], *hint)) {
+                    out[k] = Color{};  // its guess blocks it: no walk
+                } else {
+                    valid[k] = -1;
+                    ++traced;
+                }
+            } else if (hints) {
+                hints[k].primitive = OcclusionHint::kNone;
+            }
+        }
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeOcclusionLane(r, k, packet);
-        if (k < count) {
+        if (valid[k]) {
             initContext(lanes[k], &rays[k], tMin[k], tMax[k], from[k]);
             if (collect) lanes[k].shadow = &crossings[k];
         }
     }
+    if (traced == 0) return;
     EmbreeQueryContext ctx;
     initContext(ctx, nullptr, 0, 0);
     ctx.lanes = lanes;
     occludeLanes(valid, m_scene.get(), &ctx.rtc, &packet);
     for (int k = 0; k < count; ++k) {
-        if (valid[k] == 0) {
-            out[k] = Color(1.0);  // an untraceable feeler is lit, as for one ray
-        } else if (packet.tfar[k] < 0.0f) {
+        if (valid[k] == 0) continue;
+        const bool blocked = packet.tfar[k] < 0.0f;
+        // As occluded() leaves the hint: the occluder, or none when lit.
+        if (hints) hints[k].primitive = blocked ? lanes[k].occluderEntry : OcclusionHint::kNone;
+        if (blocked) {
             out[k] = Color{};
         } else if (collect) {
             m_filter.countCrossings(crossings[k].size());
             out[k] = crossings[k].product();
-        } else {
-            out[k] = Color(1.0);
         }
     }
 }

@@ -77,9 +77,11 @@ public:
                         OcclusionHint& hint) const override;
     /// One rtcOccluded16 packet (two rtcOccluded8 without AVX-512), each
     /// lane with its own exact context and, for filtered shadows, its own
-    /// crossings: each lane's answer is its single feeler's.
+    /// crossings: each lane's answer is its single feeler's. A lane whose
+    /// hint answers it (as in the hinted occluded()) is left out of the packet.
     void shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
-                      const Departure* from, int count, bool filtered, Color* out) const override;
+                      const Departure* from, int count, bool filtered, Color* out,
+                      OcclusionHint* hints = nullptr) const override;
     std::string name() const override { return "embree"; }
     double buildSeconds() const override { return m_buildSeconds; }
     FilterCounts filterCounts() const override { return m_filter.counts(); }
@@ -124,7 +126,8 @@ private:
     /// shadowPacket()'s work for one Embree packet type (RTCRay8 or RTCRay16).
     template <class Packet>
     void occludePacket(const Ray* rays, const double* tMin, const double* tMax,
-                       const Departure* from, int count, bool filtered, Color* out) const;
+                       const Departure* from, int count, bool filtered, Color* out,
+                       OcclusionHint* hints) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 
