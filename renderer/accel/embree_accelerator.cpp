@@ -270,21 +270,28 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, dou
 
 namespace {
 
-/// Ray r into lane k of a packet, with no hit yet (rtcIntersect8/16's input).
+/// Ray r into lane k of a ray packet (RTCRay8/16: rtcOccluded8/16's input,
+/// and the ray half of rtcIntersect8/16's).
+template <class RayPacket>
+void storeRay(const RTCRay& r, int k, RayPacket& p) {
+    p.org_x[k] = r.org_x;
+    p.org_y[k] = r.org_y;
+    p.org_z[k] = r.org_z;
+    p.dir_x[k] = r.dir_x;
+    p.dir_y[k] = r.dir_y;
+    p.dir_z[k] = r.dir_z;
+    p.tnear[k] = r.tnear;
+    p.tfar[k] = r.tfar;
+    p.time[k] = r.time;
+    p.mask[k] = r.mask;
+    p.id[k] = r.id;
+    p.flags[k] = r.flags;
+}
+
+/// Ray r into lane k of a ray/hit packet, with no hit yet (rtcIntersect8/16's input).
 template <class Packet>
 void storeLane(const RTCRay& r, int k, Packet& p) {
-    p.ray.org_x[k] = r.org_x;
-    p.ray.org_y[k] = r.org_y;
-    p.ray.org_z[k] = r.org_z;
-    p.ray.dir_x[k] = r.dir_x;
-    p.ray.dir_y[k] = r.dir_y;
-    p.ray.dir_z[k] = r.dir_z;
-    p.ray.tnear[k] = r.tnear;
-    p.ray.tfar[k] = r.tfar;
-    p.ray.time[k] = r.time;
-    p.ray.mask[k] = r.mask;
-    p.ray.id[k] = r.id;
-    p.ray.flags[k] = r.flags;
+    storeRay(r, k, p.ray);
     p.hit.geomID[k] = p.hit.primID[k] = p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
 }
 
@@ -298,23 +305,6 @@ RTCRayHit laneAnswer(const Packet& p, int k) {
     h.hit.primID = p.hit.primID[k];
     h.hit.geomID = p.hit.geomID[k];
     return h;
-}
-
-/// Ray r into lane k of an occlusion packet.
-template <class Packet>
-void storeOcclusionLane(const RTCRay& r, int k, Packet& p) {
-    p.org_x[k] = r.org_x;
-    p.org_y[k] = r.org_y;
-    p.org_z[k] = r.org_z;
-    p.dir_x[k] = r.dir_x;
-    p.dir_y[k] = r.dir_y;
-    p.dir_z[k] = r.dir_z;
-    p.tnear[k] = r.tnear;
-    p.tfar[k] = r.tfar;
-    p.time[k] = r.time;
-    p.mask[k] = r.mask;
-    p.id[k] = r.id;
-    p.flags[k] = r.flags;
 }
 
 void occludeLanes(const int* valid, RTCScene scene, RTCIntersectContext* ctx, RTCRay8* p) {
@@ -455,7 +445,7 @@ void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const
             }
         }
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
-        storeOcclusionLane(r, k, packet);
+        storeRay(r, k, packet);
         if (valid[k]) {
             initContext(lanes[k], &rays[k], tMin[k], tMax[k], from[k]);
             if (collect) lanes[k].shadow = &crossings[k];
