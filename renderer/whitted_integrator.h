@@ -78,9 +78,12 @@ public:
     ///   k's (out.lane(k)) and brings back the same radiance, bit for bit.
     /// \details `shadows` is the calling thread's shadow cache, as for Li: a
     ///   feeler its guess answers is not asked in the packet. Prepares nothing
-    ///   where packets of feelers do not apply: no shadows, textured kernels
-    ///   (their optics need the ray's footprint), an accelerator without
-    ///   packets.
+    ///   where packets of feelers do not apply or do not pay: no shadows,
+    ///   textured kernels (their optics need the ray's footprint), an
+    ///   accelerator without packets, and a scene whose feelers use the
+    ///   shadow cache and whose analytic primitives outnumber its triangles
+    ///   (there the cache's guesses one at a time are faster; the constructor
+    ///   gives the measurements).
     void prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits, int count,
                            PreparedHits& out, ShadowCache* shadows) const;
 
