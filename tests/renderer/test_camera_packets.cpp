@@ -125,7 +125,7 @@ TEST_CASE("camera packets: the feelers of camera hits, filtered, opaque, general
     }
     SUBCASE("opaque feelers among meshes alone (no shadow cache: it names analytic shapes)") {
         // The demo's meshes (the gem's glass stops an opaque feeler) over a
-        // floor mesh, two lights.
+        // floor mesh; point lights and a directional one (feelers to infinity).
         test::TempDir dir;
         dir.write("floor.obj", "v -6 0 -6\nv 6 0 -6\nv 6 0 6\nv -6 0 6\nf 1 3 2\nf 1 4 3\n");
         const std::string meshes = std::string(RAYLAB_SOURCE_DIR) + "/scenes/meshes/";
@@ -134,7 +134,8 @@ TEST_CASE("camera packets: the feelers of camera hits, filtered, opaque, general
             "camera": {"type": "perspective", "eye": [0, 2.4, 8], "look_at": [0, 0.9, 0],
                        "up": [0, 1, 0], "fov": 40},
             "lights": [{"type": "point", "position": [-5, 8, 6], "intensity": 0.8},
-                       {"type": "point", "position": [6, 5, 4], "intensity": 0.4}],
+                       {"type": "point", "position": [6, 5, 4], "intensity": 0.4},
+                       {"type": "directional", "direction": [0.3, -1, -0.5], "intensity": 0.3}],
             "materials": {"matte": {"kd": 0.7, "ks": 0.2, "shininess": 30, "km": 0.1}},
             "objects": [
                 {"type": "mesh", "file": "floor.obj", "material": "matte"},
