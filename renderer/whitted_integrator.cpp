@@ -111,7 +111,7 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
                                           int count, PreparedHits& out,
                                           ShadowCache* shadows) const {
     const size_t lights = m_scene.lights.size();
-    out.clear(lights);
+    out.clear(m_prepareHits ? lights : 0);  // no answers' room where none will be kept
     if (!m_prepareHits) return;
     if (!m_shadowHints) shadows = nullptr;
     if (shadows) shadows->prepare(m_scene.objects.size(), lights, m_options.maxDepth);
@@ -144,12 +144,12 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
             if (!feels[k]) continue;
             const PreparedHit& h = *out.lane(k);
             const SurfaceInteraction& si = h.si;
-            const auto [toLight, far] = towards(m_scene.lights[li], si.p);
+            const auto [toLight, reach] = towards(m_scene.lights[li], si.p);
             if (m_prune && !(dot(normals[k], normalize(toLight)) > 0)) continue;  // as shadeLocal
             const SpawnedRay shadow = (*h.spawn)(toLight);
             feelers[n] = shadow.ray;
             tMin[n] = shadow.tMin;
-            tMax[n] = far;
+            tMax[n] = reach;
             from[n] = departure(si, toLight);
             if (shadows) {  // the guesses shadeLocal would take (a camera hit is at depth 1)
                 slots[n] = ShadowCache::slots(shadows->receiver(si.object, 1), li);

@@ -113,9 +113,11 @@ public:
     ///   together (the feelers of a packet's camera hits to one light): out[i]
     ///   is exactly transmittance(rays[i], tMin[i], tMax[i], from[i]) where
     ///   `filtered`, else occluded(...) as black (blocked) or white. `hints`
-    ///   (may be null) are the feelers' hints, used and updated as the hinted
-    ///   forms use and update one. For accelerators that trace packets
-    ///   (tracesPackets); the default asks one feeler at a time.
+    ///   (may be null) are the feelers' hints, used as the hinted forms use
+    ///   one: the answers are the same whatever they hold, and each comes back
+    ///   naming an occluder of its feeler or none (a packet may find another
+    ///   occluder than a single query would). For accelerators that trace
+    ///   packets (tracesPackets); the default asks one feeler at a time.
     virtual void shadowPacket(const Ray* rays, const double* tMin, const double* tMax,
                               const Departure* from, int count, bool filtered, Color* out,
                               OcclusionHint* hints = nullptr) const {

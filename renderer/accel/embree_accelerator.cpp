@@ -295,6 +295,19 @@ void storeLane(const RTCRay& r, int k, Packet& p) {
     p.hit.geomID[k] = p.hit.primID[k] = p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
 }
 
+/// What a lane that is not to be traced holds: besides its 0 in the valid
+/// mask, tnear > tfar. A device without a native packet of this width (SSE)
+/// hands the packet to its stream path, which ignores the mask and skips
+/// exactly such rays (rtcIntersectNM's contract); a zero ray would be traced
+/// there, and its callbacks would find no context for the lane.
+RTCRay inactiveRay(unsigned id) {
+    RTCRay r{};
+    r.tnear = 1.0f;
+    r.tfar = 0.0f;
+    r.id = id;
+    return r;
+}
+
 /// Lane k's answer as a single ray's record: the fields decode() reads.
 template <class Packet>
 RTCRayHit laneAnswer(const Packet& p, int k) {
@@ -365,11 +378,12 @@ void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const d
     alignas(64) int valid[K];
     EmbreeQueryContext lanes[K];
     for (int k = 0; k < K; ++k) {
-        RTCRay r{};  // an inactive lane: zeros, never read by Embree
+        RTCRay r{};
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
+        if (valid[k] == 0) r = inactiveRay(unsigned(k));
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeLane(r, k, packet);
-        if (k < count) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
+        if (valid[k]) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
     }
     EmbreeQueryContext ctx;
     initContext(ctx, nullptr, 0, 0);
@@ -427,7 +441,7 @@ void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const
     TransmittanceAccumulator crossings[K];
     int traced = 0;
     for (int k = 0; k < K; ++k) {
-        RTCRay r{};  // an inactive lane: zeros, never read by Embree
+        RTCRay r{};
         valid[k] = 0;
         if (k < count) {
             out[k] = Color(1.0);  // an untraceable feeler is lit, as for one ray
@@ -444,6 +458,7 @@ void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const
                 hints[k].primitive = OcclusionHint::kNone;
             }
         }
+        if (valid[k] == 0) r = inactiveRay(unsigned(k));  // answered, or none to trace
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeRay(r, k, packet);
         if (valid[k]) {

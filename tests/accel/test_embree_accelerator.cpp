@@ -784,7 +784,9 @@ TEST_CASE("embree: a packet of shadow feelers answers as one feeler at a time") 
     // and in random directions: through glass spheres, a glass polygon pane,
     // glass and gold mesh faces, cut-out leaves; with and without a
     // departure; filtered (transmittance, each lane with its own crossings)
-    // and opaque. Every ISA: 16-wide with AVX-512, 8-wide or emulated below.
+    // and opaque; untraceable ones; with the shadow cache's hints (any
+    // entries) and without. Every ISA: 16-wide with AVX-512, 8-wide or
+    // emulated below.
     const std::string dir = std::string(RAYLAB_SOURCE_DIR) + "/scenes/";
     for (const char* name : {"glass_shadows.json", "demo.json", "cutouts.json"}) {
         CAPTURE(name);
@@ -817,15 +819,36 @@ TEST_CASE("embree: a packet of shadow feelers answers as one feeler at a time") 
                     from[k] = rng.next() % 5 == 0
                                   ? Departure{uint32_t(rng.next() % scene.objects.size())}
                                   : Departure{};
+                    if (n % 29 == 7 && k == count / 2) rays[k].d.y = std::numeric_limits<double>::quiet_NaN();
+                    if (n % 31 == 5 && k == 0) tMax[k] = tMin[k];  // an empty interval
                 }
+                // Every other packet with the shadow cache's hints: any
+                // entries (blocking or not) and none, as the cache may hold.
+                const bool hinted = n % 2 == 0;
+                OcclusionHint hints[K];
+                for (int k = 0; k < count; ++k)
+                    if (rng.next() % 3 != 0)
+                        hints[k] = {uint32_t(rng.next() % 40), uint32_t(rng.next() % 40)};
                 Color out[K];
-                packets.shadowPacket(rays, tMin, tMax, from, count, filtered, out);
+                packets.shadowPacket(rays, tMin, tMax, from, count, filtered, out,
+                                     hinted ? hints : nullptr);
                 for (int k = 0; k < count; ++k) {
                     const Color expected =
                         filtered ? single.transmittance(rays[k], tMin[k], tMax[k], from[k])
                         : single.occluded(rays[k], tMin[k], tMax[k], from[k]) ? Color{}
                                                                               : Color(1.0);
                     CHECK(std::memcmp(&out[k], &expected, sizeof expected) == 0);
+                    if (hinted && !filtered) {
+                        // The hint comes back naming an occluder of this very
+                        // feeler, or none where it got through. (Filtered
+                        // feelers through a surface filter use no hint, as
+                        // transmittance() uses none: usesOcclusionHints.)
+                        if (!expected.isBlack()) CHECK(hints[k].primitive == OcclusionHint::kNone);
+                        if (hints[k].primitive != OcclusionHint::kNone) {
+                            OcclusionHint named{hints[k].primitive, hints[k].primitive};
+                            CHECK(single.occluded(rays[k], tMin[k], tMax[k], from[k], named));
+                        }
+                    }
                     blocked += expected.isBlack();
                     lit += expected.r == 1 && expected.g == 1 && expected.b == 1;
                     dimmed += !expected.isBlack() && expected.r < 1;
