@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "geometry/spawn.h"
-#include "geometry/triangle_mesh.h"
 #include "renderer/cancel.h"
 #include "renderer/late_value.h"
 #include "shading/brdf.h"
@@ -51,8 +50,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Accelerator& acce
     // docs/benchmarks.md, session 2026-12-06 18:09).
     size_t triangles = 0;
     for (const Object& o : scene.objects)
-        if (const TriangleMesh* mesh = o.shape ? o.shape->nativeTriangles() : nullptr)
-            triangles += mesh->triangleCount();
+        if (o.shape && o.shape->nativeTriangles()) triangles += o.primitiveCount();
     const bool mostlyTriangles = 2 * triangles > scene.primitiveCount();
     m_prepareHits = m_effects.has(kShadows) && !m_effects.textures() && accel.tracesPackets() &&
                     (!m_shadowHints || mostlyTriangles);
@@ -206,7 +204,7 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
         if (!shadesLocally(m)) return result;
         const Color diffuse = diffuseAt(si, m);
         ShadowCache::Receiver receiver{};
-        if (state.shadows) receiver = state.shadows->receiver(si.object, depth);
+        if (state.shadows && !answered) receiver = state.shadows->receiver(si.object, depth);
         for (size_t li = 0; li < m_scene.lights.size(); ++li) {
             const Light& light = m_scene.lights[li];
             const auto [toLight, tMax] = towards(light, si.p);

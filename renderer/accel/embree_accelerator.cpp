@@ -300,11 +300,10 @@ void storeLane(const RTCRay& r, int k, Packet& p) {
 /// hands the packet to its stream path, which ignores the mask and skips
 /// exactly such rays (rtcIntersectNM's contract); a zero ray would be traced
 /// there, and its callbacks would find no context for the lane.
-RTCRay inactiveRay(unsigned id) {
+RTCRay inactiveRay() {
     RTCRay r{};
     r.tnear = 1.0f;
     r.tfar = 0.0f;
-    r.id = id;
     return r;
 }
 
@@ -380,7 +379,7 @@ void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const d
     for (int k = 0; k < K; ++k) {
         RTCRay r{};
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
-        if (valid[k] == 0) r = inactiveRay(unsigned(k));
+        if (valid[k] == 0) r = inactiveRay();
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeLane(r, k, packet);
         if (valid[k]) initContext(lanes[k], &rays[k], tMin[k], tMax[k]);
@@ -458,7 +457,7 @@ void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const
                 hints[k].primitive = OcclusionHint::kNone;
             }
         }
-        if (valid[k] == 0) r = inactiveRay(unsigned(k));  // answered, or none to trace
+        if (valid[k] == 0) r = inactiveRay();  // answered, or none to trace
         r.id = unsigned(k);  // how the callbacks find the lane's exact context
         storeRay(r, k, packet);
         if (valid[k]) {
