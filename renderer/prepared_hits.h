@@ -18,14 +18,23 @@
 
 namespace raylab {
 
-/// One camera hit, prepared: its surface record and, per light, what that
-/// light's feeler brought back (filtered shadows: the transmittance;
-/// otherwise black where blocked, white where lit). Only the feelers the
-/// integrator traces from this hit are set.
+/// One light as seen from a prepared hit: the unit direction towards it,
+/// its cosine with the shading normal (on the side the ray arrives from),
+/// both as shadeLocal computes them, and what its feeler brought back
+/// (filtered shadows: the transmittance; otherwise black where blocked,
+/// white where lit), set only where the integrator traces that feeler.
+struct PreparedFeeler {
+    Vec3 l;
+    double nDotL = 0;
+    Color through;
+};
+
+/// One camera hit, prepared: its surface record, its spawner and, per light,
+/// its feeler (PreparedFeeler).
 struct PreparedHit {
     SurfaceInteraction si;
-    std::optional<RaySpawner> spawn;  ///< the hit's spawned rays, as traceHit makes them
-    const Color* feelers = nullptr;   ///< indexed by light
+    std::optional<RaySpawner> spawn;        ///< the hit's spawned rays, as traceHit makes them
+    const PreparedFeeler* feelers = nullptr;  ///< indexed by light
 };
 
 /// The prepared camera hits of one packet of camera rays.
@@ -57,14 +66,14 @@ public:
         m_hits[size_t(k)].feelers = feelers(k);
         return m_hits[size_t(k)];
     }
-    /// Lane k's answers, by light.
-    Color* feelers(int k) { return m_answers.data() + size_t(k) * m_lights; }
+    /// Lane k's feelers, by light.
+    PreparedFeeler* feelers(int k) { return m_answers.data() + size_t(k) * m_lights; }
 
 private:
     std::array<PreparedHit, Accelerator::kPacketRays> m_hits;
     std::array<bool, Accelerator::kPacketRays> m_ready{};
     size_t m_lights = 0;
-    std::vector<Color> m_answers;  ///< lane-major: lane · lights + light
+    std::vector<PreparedFeeler> m_answers;  ///< lane-major: lane · lights + light
 };
 
 }  // namespace raylab

@@ -143,7 +143,10 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
             const PreparedHit& h = *out.lane(k);
             const SurfaceInteraction& si = h.si;
             const auto [toLight, reach] = towards(m_scene.lights[li], si.p);
-            if (m_prune && !(dot(normals[k], normalize(toLight)) > 0)) continue;  // as shadeLocal
+            PreparedFeeler& f = out.feelers(k)[li];  // as shadeLocal computes them
+            f.l = normalize(toLight);
+            f.nDotL = dot(normals[k], f.l);
+            if (m_prune && !(f.nDotL > 0)) continue;
             const SpawnedRay shadow = (*h.spawn)(toLight);
             feelers[n] = shadow.ray;
             tMin[n] = shadow.tMin;
@@ -159,7 +162,7 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
         m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers,
                              shadows ? hints : nullptr);
         for (int j = 0; j < n; ++j) {
-            out.feelers(lane[j])[li] = answers[j];
+            out.feelers(lane[j])[li].through = answers[j];
             if (shadows) slots[j].remember(hints[j]);
         }
     }
@@ -193,7 +196,8 @@ Color WhittedIntegrator::start(const Ray& cameraRay, double tNear, TraceState& s
 template <unsigned E>
 Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m,
                                     const Vec3& n, const RaySpawner& spawn, const Vec3& toViewer,
-                                    int depth, TraceState& state, const Color* answered) const {
+                                    int depth, TraceState& state,
+                                    const PreparedFeeler* answered) const {
     // Radiance saturates at the largest double (shading/radiance_range.h):
     // an overflow is as bright as can be, never Inf, never NaN, never black.
     const Color ka = m.ambientFollowsDiffuse ? diffuseAt(si, m) : m.ka;
@@ -203,60 +207,70 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
     } else {
         if (!shadesLocally(m)) return result;
         const Color diffuse = diffuseAt(si, m);
-        ShadowCache::Receiver receiver{};
-        if (state.shadows && !answered) receiver = state.shadows->receiver(si.object, depth);
-        for (size_t li = 0; li < m_scene.lights.size(); ++li) {
-            const Light& light = m_scene.lights[li];
-            const auto [toLight, tMax] = towards(light, si.p);
-            const Vec3 l = normalize(toLight);
-            // No shadow ray when the normal faces away from the light. The
-            // general kernel traces it anyway and then adds nothing, so both
-            // kernels produce the same image.
-            const double nDotL = dot(n, l);
-            const bool facing = nDotL > 0;
-            if (m_prune && !facing) continue;
-            state.counters.count(RayType::Shadow, depth + 1);
-            ++state.spent.traced;
-            Color arriving = light.intensity;
-            if (answered) {  // prepareCameraHits traced this feeler
-                const Color& through = answered[li];
-                if (through.isBlack() || !facing) continue;
-                if (m_effects.filteredShadows) arriving = saturated(arriving * saturated(through));
-            } else {
-                const SpawnedRay shadow = spawn(toLight);
-                const Departure from = departure(si, toLight);
-                // The occluders of earlier feelers from this surface are this
-                // one's first guesses (shadow_cache.h): less work, the same answer.
-                OcclusionHint hint;
-                ShadowCache::Slots slots{};
-                if (state.shadows) {
-                    slots = ShadowCache::slots(receiver, li);
-                    hint = slots.hint();
-                }
-                // Filtered shadows: the light arrives dimmed by the transmitters
-                // on the way (no refraction of the feeler: an approximation).
-                if (m_effects.filteredShadows) {
-                    const Color through =
-                        state.shadows
-                            ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
-                            : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
-                    if (state.shadows) slots.remember(hint);
-                    if (through.isBlack() || !facing) continue;
-                    arriving = saturated(arriving * saturated(through));
-                } else {
-                    const bool blocked =
-                        state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
-                                      : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
-                    if (state.shadows) slots.remember(hint);
-                    if (blocked || !facing) continue;
-                }
-            }
+        // Light arriving along l adds its diffuse and highlight terms.
+        const auto add = [&](const Color& arriving, const Vec3& l, double nDotL) {
             result += lambert(diffuse, arriving, nDotL);
             if constexpr ((E & kHighlights) != 0) {
                 if (!m_prune || !m.ks.isBlack())
                     result += m.highlight == Highlight::Phong
                                   ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
                                   : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
+            }
+        };
+        // No shadow ray when the normal faces away from the light. The
+        // general kernel traces it anyway and then adds nothing, so both
+        // kernels produce the same image.
+        if (answered) {  // prepareCameraHits traced the feelers, and has l and n·l
+            for (size_t li = 0; li < m_scene.lights.size(); ++li) {
+                const PreparedFeeler& f = answered[li];
+                const bool facing = f.nDotL > 0;
+                if (m_prune && !facing) continue;
+                state.counters.count(RayType::Shadow, depth + 1);
+                ++state.spent.traced;
+                if (f.through.isBlack() || !facing) continue;
+                const Color& intensity = m_scene.lights[li].intensity;
+                add(m_effects.filteredShadows ? saturated(intensity * saturated(f.through)) : intensity,
+                    f.l, f.nDotL);
+            }
+            return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
+        }
+        ShadowCache::Receiver receiver{};
+        if (state.shadows) receiver = state.shadows->receiver(si.object, depth);
+        for (size_t li = 0; li < m_scene.lights.size(); ++li) {
+            const Light& light = m_scene.lights[li];
+            const auto [toLight, tMax] = towards(light, si.p);
+            const Vec3 l = normalize(toLight);
+            const double nDotL = dot(n, l);
+            const bool facing = nDotL > 0;
+            if (m_prune && !facing) continue;
+            state.counters.count(RayType::Shadow, depth + 1);
+            ++state.spent.traced;
+            const SpawnedRay shadow = spawn(toLight);
+            const Departure from = departure(si, toLight);
+            // The occluders of earlier feelers from this surface are this
+            // one's first guesses (shadow_cache.h): less work, the same answer.
+            OcclusionHint hint;
+            ShadowCache::Slots slots{};
+            if (state.shadows) {
+                slots = ShadowCache::slots(receiver, li);
+                hint = slots.hint();
+            }
+            // Filtered shadows: the light arrives dimmed by the transmitters
+            // on the way (no refraction of the feeler: an approximation).
+            if (m_effects.filteredShadows) {
+                const Color through =
+                    state.shadows ? m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from, hint)
+                                  : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
+                if (state.shadows) slots.remember(hint);
+                if (through.isBlack() || !facing) continue;
+                add(saturated(light.intensity * saturated(through)), l, nDotL);
+            } else {
+                const bool blocked =
+                    state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
+                                  : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
+                if (state.shadows) slots.remember(hint);
+                if (blocked || !facing) continue;
+                add(light.intensity, l, nDotL);
             }
         }
         return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
@@ -287,10 +301,14 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
         hasMaps = m_scene.materials[m_scene.objects[hit->object].materialOf(hit->prim)].maps.any();
         detail = hasMaps ? SurfaceDetail::Complete : SurfaceDetail::Derivatives;
     }
-    // A prepared camera hit (untextured kernels) comes with its record.
-    SurfaceInteraction si =
-        prepared ? prepared->si
-                 : m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
+    // A prepared camera hit (untextured kernels) comes with its record, read
+    // in place (a copy showed in the profile).
+    LateValue<SurfaceInteraction> ownRecord;
+    SurfaceInteraction* own =
+        prepared ? nullptr : &ownRecord.emplaceFrom([&] {
+            return m_scene.surfaceAt(ray, *hit, m_options.accelOptions.intersect, detail);
+        });
+    const SurfaceInteraction& si = own ? *own : prepared->si;
     // `entering` is false when the ray is inside the object (it hit the back
     // of the outward normal).
     const bool entering = si.frontFace;
@@ -316,7 +334,7 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
     if constexpr (textured(E)) {
         if (hasMaps)
             optics = &texturedOptics.emplaceFrom(
-                [&] { return m_textures->shade(si.material, si, hitFootprint); });
+                [&] { return m_textures->shade(si.material, *own, hitFootprint); });
     }
     const SurfaceOptics& m = *optics;
     // Normals on the side the ray arrives from.

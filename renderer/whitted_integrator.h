@@ -129,12 +129,13 @@ private:
     /// distance along the view axis.
     double cameraTMin(const Ray& cameraRay) const;
     /// Ambient, and each light's diffuse and highlight where its feeler
-    /// gets through; `answered` (may be null) holds the feelers' answers
-    /// by light (PreparedHit::feelers), which are then not traced.
+    /// gets through; `answered` (may be null) holds the feelers by light,
+    /// answered, with their l and n·l (PreparedHit::feelers): they are then
+    /// neither traced nor computed again.
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
-                     TraceState& state, const Color* answered) const;
+                     TraceState& state, const PreparedFeeler* answered) const;
     /// Whether shadeLocal traces feelers from a surface of optics `m` at all
     /// (SPD counts them even from surfaces without a local term).
     bool shadesLocally(const SurfaceOptics& m) const {
