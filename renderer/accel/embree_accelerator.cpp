@@ -433,11 +433,24 @@ void EmbreeAccelerator::occludePacket(const Ray* rays, const double* tMin, const
     // transmittance() without an active surface filter is occluded(), the
     // only one that uses hints.
     const bool collect = filtered && m_filter.active();
-    if (collect) hints = nullptr;
+    if (collect) {
+        TransmittanceAccumulator crossings[K];
+        occludePacketLanes<Packet>(rays, tMin, tMax, from, count, crossings, out, nullptr);
+    } else {
+        occludePacketLanes<Packet>(rays, tMin, tMax, from, count, nullptr, out, hints);
+    }
+}
+
+template <class Packet>
+void EmbreeAccelerator::occludePacketLanes(const Ray* rays, const double* tMin,
+                                           const double* tMax, const Departure* from, int count,
+                                           TransmittanceAccumulator* crossings, Color* out,
+                                           OcclusionHint* hints) const {
+    constexpr int K = kLanes<Packet>;
+    const bool collect = crossings != nullptr;
     alignas(64) Packet packet;
     alignas(64) int valid[K];
     EmbreeQueryContext lanes[K];
-    TransmittanceAccumulator crossings[K];
     int traced = 0;
     for (int k = 0; k < K; ++k) {
         RTCRay r{};

@@ -128,6 +128,14 @@ private:
     void occludePacket(const Ray* rays, const double* tMin, const double* tMax,
                        const Departure* from, int count, bool filtered, Color* out,
                        OcclusionHint* hints) const;
+    /// occludePacket()'s work: `crossings` (one per lane) collects the
+    /// transmitters of filtered feelers, null for opaque ones (their
+    /// accumulators are not even built); `hints` only for opaque ones.
+    template <class Packet>
+    void occludePacketLanes(const Ray* rays, const double* tMin, const double* tMax,
+                            const Departure* from, int count,
+                            TransmittanceAccumulator* crossings, Color* out,
+                            OcclusionHint* hints) const;
     void addUserGeometry(const Scene& scene, RTCBuildQuality quality);
     void addTriangles(const Scene& scene, RTCBuildQuality quality);
 

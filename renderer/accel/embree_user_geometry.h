@@ -30,29 +30,29 @@ struct EmbreeQueryContext {
     /// Embree's float copy of the ray (made relative to the origin). Set only
     /// for rtcIntersect1/rtcOccluded1: one context cannot describe the rays of
     /// a packet or stream, and incoherent streams call back with N = 1.
-    const Ray* ray = nullptr;
-    double tMin = 0;   ///< exclusive lower bound, double (exact path only)
-    double bestT = 0;  ///< closest user-geometry hit so far; starts at tMax
-    double bestU = 0;  ///< its shape parameters
-    double bestV = 0;
-    uint32_t bestEntry = 0;  ///< its entry in the table
-    bool exactHit = false;   ///< a hit was recorded from `ray`
+    const Ray* ray;
+    double tMin;   ///< exclusive lower bound, double (exact path only)
+    double bestT;  ///< closest user-geometry hit so far; starts at tMax
+    double bestU;  ///< its shape parameters
+    double bestV;
+    uint32_t bestEntry;  ///< its entry in the table
+    bool exactHit;   ///< a hit was recorded from `ray`
     /// Decides about candidates on filtered objects (cut-outs, transmitters),
     /// or null: every candidate is a hit (bare replay).
-    const SurfaceFilter* filter = nullptr;
+    const SurfaceFilter* filter;
     /// Set for a transmittance query: occlusion candidates on transmitters are
     /// collected here instead of ending the query.
-    TransmittanceAccumulator* shadow = nullptr;
+    TransmittanceAccumulator* shadow;
     /// Occlusion queries: the entry whose exact test found the occluder, or
     /// OcclusionHint::kNone (none yet, or a native triangle occluded).
-    uint32_t occluderEntry = 0xffffffffu;
+    uint32_t occluderEntry;
     /// The object the ray departs from (Departure), or kNone: its entries
     /// answer "no hit" without their test (exact path only).
-    uint32_t departed = 0xffffffffu;
+    uint32_t departed;
     /// A packet's exact lanes (EmbreeAccelerator::intersectPacket): the
     /// double ray, interval and best hit of the ray whose id is i are
     /// lanes[i]'s; null for single rays.
-    EmbreeQueryContext* lanes = nullptr;
+    EmbreeQueryContext* lanes;
 
     /// Prepares the context for one query of `ray` (may be null) over (tMin,
     /// tMax) that leaves out object `departedObject` (Departure; none by default).
