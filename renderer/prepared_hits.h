@@ -4,6 +4,9 @@
 // hits towards one light are nearly parallel, so the accelerator answers
 // them together, as a packet, for less traversal than one at a time; each
 // answer is exactly the single feeler's, so Li computes the same radiance.
+// The lights' terms are computed there too, lane after lane: the square
+// roots and divisions of one hit overlap with the next one's, where in the
+// ray tree each waits for the one before.
 // A worker keeps one PreparedHits and reuses it packet after packet.
 
 #include <array>
@@ -18,20 +21,24 @@
 
 namespace raylab {
 
-/// One light as seen from a prepared hit: the unit direction towards it,
-/// its cosine with the shading normal (on the side the ray arrives from),
-/// both as shadeLocal computes them, and what its feeler brought back
+/// One light as seen from a prepared hit: the unit direction towards it and
+/// its cosine with the shading normal (on the side the ray arrives from);
+/// where the integrator traces that light's feeler, what it brought back
 /// (filtered shadows: the transmittance; otherwise black where blocked,
-/// white where lit), set only where the integrator traces that feeler.
+/// white where lit); and where the light then arrives, its diffuse and
+/// highlight terms. Each as shadeLocal computes it.
 struct PreparedFeeler {
     Vec3 l;
     double nDotL = 0;
     Color through;
+    Color diffuse;    ///< Lambert's term
+    Color highlight;  ///< the highlight's term (where the kernel has highlights)
 };
 
-/// One camera hit, prepared: its surface record, its spawner and, per light,
-/// its feeler (PreparedFeeler).
+/// One camera hit, prepared: the camera ray's unit direction, the hit's
+/// surface record, its spawner and, per light, its feeler (PreparedFeeler).
 struct PreparedHit {
+    Vec3 dir;  ///< normalize(ray.d), as traceHit computes it
     SurfaceInteraction si;
     std::optional<RaySpawner> spawn;        ///< the hit's spawned rays, as traceHit makes them
     const PreparedFeeler* feelers = nullptr;  ///< indexed by light

@@ -105,6 +105,12 @@ void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit
     m_accel.intersectPacket(rays, tMin, tMax, count, out);
 }
 
+Color WhittedIntegrator::highlightOf(const SurfaceOptics& m, const Color& arriving, const Vec3& n,
+                                     const Vec3& l, const Vec3& toViewer) const {
+    return m.highlight == Highlight::Phong ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
+                                           : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
+}
+
 void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits,
                                           int count, PreparedHits& out,
                                           ShadowCache* shadows) const {
@@ -117,16 +123,20 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
     // Each hit as traceHit sees it (untextured kernels: normals only).
     Vec3 normals[K];  // on the side the ray arrives from
     bool feels[K];    // shadeLocal traces feelers from this hit
+    Color diffuse[K];  // its diffuse reflectance
     for (int k = 0; k < count; ++k) {
         feels[k] = false;
         if (!hits[k]) continue;
         PreparedHit& h = out.prepare(k);
+        h.dir = normalize(rays[k].d);
         h.si = m_scene.surfaceAt(rays[k], *hits[k], m_options.accelOptions.intersect,
                                  SurfaceDetail::Normals);
         const SurfaceInteraction& si = h.si;
         normals[k] = si.frontFace ? si.ns : -si.ns;
         h.spawn.emplace(si.p, si.frontFace ? si.ng : -si.ng, si.span, m_options.spawn);
-        feels[k] = shadesLocally(m_scene.materials[si.material]);
+        const SurfaceOptics& m = m_scene.materials[si.material];
+        feels[k] = shadesLocally(m);
+        diffuse[k] = diffuseAt(si, m);
     }
     // Per light, the feelers shadeLocal would trace, in one packet.
     Ray feelers[K];
@@ -161,9 +171,21 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
         if (n == 0) continue;
         m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers,
                              shadows ? hints : nullptr);
+        const Light& light = m_scene.lights[li];
         for (int j = 0; j < n; ++j) {
-            out.feelers(lane[j])[li].through = answers[j];
             if (shadows) slots[j].remember(hints[j]);
+            const int k = lane[j];
+            PreparedFeeler& f = out.feelers(k)[li];
+            f.through = answers[j];
+            if (f.through.isBlack() || !(f.nDotL > 0)) continue;  // no terms (shadeLocal)
+            const Color arriving = m_effects.filteredShadows
+                                       ? saturated(light.intensity * saturated(f.through))
+                                       : light.intensity;
+            const PreparedHit& h = *out.lane(k);
+            f.diffuse = lambert(diffuse[k], arriving, f.nDotL);
+            if (m_effects.has(kHighlights) && addsHighlight(m_scene.materials[h.si.material]))
+                f.highlight = highlightOf(m_scene.materials[h.si.material], arriving, normals[k],
+                                          f.l, -h.dir);
         }
     }
 }
@@ -210,12 +232,8 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
         // Light arriving along l adds its diffuse and highlight terms.
         const auto add = [&](const Color& arriving, const Vec3& l, double nDotL) {
             result += lambert(diffuse, arriving, nDotL);
-            if constexpr ((E & kHighlights) != 0) {
-                if (!m_prune || !m.ks.isBlack())
-                    result += m.highlight == Highlight::Phong
-                                  ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
-                                  : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
-            }
+            if constexpr ((E & kHighlights) != 0)
+                if (addsHighlight(m)) result += highlightOf(m, arriving, n, l, toViewer);
         };
         // No shadow ray when the normal faces away from the light. The
         // general kernel traces it anyway and then adds nothing, so both
@@ -228,9 +246,9 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                 state.counters.count(RayType::Shadow, depth + 1);
                 ++state.spent.traced;
                 if (f.through.isBlack() || !facing) continue;
-                const Color& intensity = m_scene.lights[li].intensity;
-                add(m_effects.filteredShadows ? saturated(intensity * saturated(f.through)) : intensity,
-                    f.l, f.nDotL);
+                result += f.diffuse;  // the terms add as add() adds them
+                if constexpr ((E & kHighlights) != 0)
+                    if (addsHighlight(m)) result += f.highlight;
             }
             return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
         }
@@ -312,7 +330,7 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
     // `entering` is false when the ray is inside the object (it hit the back
     // of the outward normal).
     const bool entering = si.frontFace;
-    const Vec3 dir = normalize(ray.d);
+    const Vec3 dir = prepared ? prepared->dir : normalize(ray.d);
     const SurfaceOptics* optics = &m_scene.materials[si.material];
     // The footprint the ray carries; a camera ray's (carried == nullptr) is
     // computed here, where normalize(ray.d) is known (LateValue: nothing is

@@ -136,6 +136,13 @@ private:
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      TraceState& state, const PreparedFeeler* answered) const;
+    /// Whether a lit light adds a highlight term at a surface of optics `m`
+    /// (pruned kernels skip a black ks; the general kernel adds its zero).
+    bool addsHighlight(const SurfaceOptics& m) const { return !m_prune || !m.ks.isBlack(); }
+    /// The highlight of light `arriving` along l: Phong or Blinn-Phong, as `m` asks.
+    [[gnu::always_inline]] inline Color highlightOf(const SurfaceOptics& m, const Color& arriving,
+                                                    const Vec3& n, const Vec3& l,
+                                                    const Vec3& toViewer) const;
     /// Whether shadeLocal traces feelers from a surface of optics `m` at all
     /// (SPD counts them even from surfaces without a local term).
     bool shadesLocally(const SurfaceOptics& m) const {
