@@ -21,18 +21,27 @@
 
 namespace raylab {
 
-/// One light as seen from a prepared hit: the unit direction towards it and
-/// its cosine with the shading normal (on the side the ray arrives from);
-/// where the integrator traces that light's feeler, what it brought back
-/// (filtered shadows: the transmittance; otherwise black where blocked,
-/// white where lit); and where the light then arrives, its diffuse and
-/// highlight terms. Each as shadeLocal computes it.
+/// What a light that arrives at a hit adds there, in this order: Lambert's
+/// term, then the highlight's where there is one (WhittedIntegrator::lightTerms).
+struct LightTerms {
+    Color diffuse;
+    Color highlight;
+    bool highlighted = false;  ///< the highlight is added (a zero added could turn -0 into +0)
+};
+
+/// One light as seen from a prepared hit, as shadeLocal would find it: the
+/// unit direction towards it (kept for the terms) and its cosine with the
+/// shading normal (on the side the ray arrives from); where the integrator
+/// traces the light's feeler, what the feeler brought back (filtered
+/// shadows: the transmittance; otherwise black where blocked, white where
+/// lit), and whether the light then arrives (`lit`: let through and facing
+/// the normal) with the terms it adds.
 struct PreparedFeeler {
     Vec3 l;
     double nDotL = 0;
     Color through;
-    Color diffuse;    ///< Lambert's term
-    Color highlight;  ///< the highlight's term (where the kernel has highlights)
+    bool lit = false;
+    LightTerms terms;  ///< set where lit
 };
 
 /// One camera hit, prepared: the camera ray's unit direction, the hit's
@@ -40,7 +49,7 @@ struct PreparedFeeler {
 struct PreparedHit {
     Vec3 dir;  ///< normalize(ray.d), as traceHit computes it
     SurfaceInteraction si;
-    std::optional<RaySpawner> spawn;        ///< the hit's spawned rays, as traceHit makes them
+    std::optional<RaySpawner> spawn;          ///< the hit's spawned rays, as traceHit makes them
     const PreparedFeeler* feelers = nullptr;  ///< indexed by light
 };
 
@@ -59,28 +68,28 @@ public:
     /// Lane k's prepared hit, or null (a miss, or nothing was prepared).
     const PreparedHit* lane(int k) const { return m_ready[size_t(k)] ? &m_hits[size_t(k)] : nullptr; }
 
-    /// No lane prepared, room for the answers of `lights` lights per lane
+    /// No lane prepared, room for the feelers of `lights` lights per lane
     /// (before a packet is prepared, or when none will be).
     void clear(size_t lights) {
         m_ready.fill(false);
         m_lights = lights;
-        if (m_answers.size() < m_hits.size() * lights) m_answers.resize(m_hits.size() * lights);
+        if (m_feelers.size() < m_hits.size() * lights) m_feelers.resize(m_hits.size() * lights);
     }
-    /// Lane k is prepared: its surface record is to be filled in, its
-    /// feelers' answers go to feelers(k).
+    /// Lane k is prepared: its direction and surface record are to be
+    /// filled in, its feelers go to feelers(k).
     PreparedHit& prepare(int k) {
         m_ready[size_t(k)] = true;
         m_hits[size_t(k)].feelers = feelers(k);
         return m_hits[size_t(k)];
     }
     /// Lane k's feelers, by light.
-    PreparedFeeler* feelers(int k) { return m_answers.data() + size_t(k) * m_lights; }
+    PreparedFeeler* feelers(int k) { return m_feelers.data() + size_t(k) * m_lights; }
 
 private:
     std::array<PreparedHit, Accelerator::kPacketRays> m_hits;
     std::array<bool, Accelerator::kPacketRays> m_ready{};
     size_t m_lights = 0;
-    std::vector<PreparedFeeler> m_answers;  ///< lane-major: lane · lights + light
+    std::vector<PreparedFeeler> m_feelers;  ///< lane-major: lane · lights + light
 };
 
 }  // namespace raylab

@@ -105,17 +105,34 @@ void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit
     m_accel.intersectPacket(rays, tMin, tMax, count, out);
 }
 
-Color WhittedIntegrator::highlightOf(const SurfaceOptics& m, const Color& arriving, const Vec3& n,
-                                     const Vec3& l, const Vec3& toViewer) const {
-    return m.highlight == Highlight::Phong ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
-                                           : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
+[[gnu::always_inline]] inline LightTerms WhittedIntegrator::lightTerms(
+    bool highlights, const SurfaceOptics& m, const Color& diffuse, const Color& arriving,
+    const Vec3& n, const Vec3& l, double nDotL, const Vec3& toViewer) const {
+    LightTerms t;
+    t.diffuse = lambert(diffuse, arriving, nDotL);
+    t.highlighted = highlights && (!m_prune || !m.ks.isBlack());
+    if (t.highlighted)
+        t.highlight = m.highlight == Highlight::Phong
+                          ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
+                          : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
+    return t;
 }
+
+namespace {
+
+/// Adds a light's terms to `result` in LightTerms' order.
+void addTerms(Color& result, const LightTerms& t) {
+    result += t.diffuse;
+    if (t.highlighted) result += t.highlight;
+}
+
+}  // namespace
 
 void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<Hit>* hits,
                                           int count, PreparedHits& out,
                                           ShadowCache* shadows) const {
     const size_t lights = m_scene.lights.size();
-    out.clear(m_prepareHits ? lights : 0);  // no answers' room where none will be kept
+    out.clear(m_prepareHits ? lights : 0);  // no feelers' room where none will be kept
     if (!m_prepareHits) return;
     if (!m_shadowHints) shadows = nullptr;
     if (shadows) shadows->prepare(m_scene.objects.size(), lights, m_options.maxDepth);
@@ -123,7 +140,7 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
     // Each hit as traceHit sees it (untextured kernels: normals only).
     Vec3 normals[K];  // on the side the ray arrives from
     bool feels[K];    // shadeLocal traces feelers from this hit
-    Color diffuse[K];  // its diffuse reflectance
+    Color diffuse[K];  // its diffuse reflectance, where it does
     for (int k = 0; k < count; ++k) {
         feels[k] = false;
         if (!hits[k]) continue;
@@ -136,7 +153,7 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
         h.spawn.emplace(si.p, si.frontFace ? si.ng : -si.ng, si.span, m_options.spawn);
         const SurfaceOptics& m = m_scene.materials[si.material];
         feels[k] = shadesLocally(m);
-        diffuse[k] = diffuseAt(si, m);
+        if (feels[k]) diffuse[k] = diffuseAt(si, m);
     }
     // Per light, the feelers shadeLocal would trace, in one packet.
     Ray feelers[K];
@@ -171,21 +188,22 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
         if (n == 0) continue;
         m_accel.shadowPacket(feelers, tMin, tMax, from, n, m_effects.filteredShadows, answers,
                              shadows ? hints : nullptr);
+        // The terms of the lights that arrive, lane after lane: the square
+        // roots and divisions of neighbouring hits overlap, where in each
+        // ray tree they would wait for the work before them.
         const Light& light = m_scene.lights[li];
         for (int j = 0; j < n; ++j) {
             if (shadows) slots[j].remember(hints[j]);
             const int k = lane[j];
             PreparedFeeler& f = out.feelers(k)[li];
             f.through = answers[j];
-            if (f.through.isBlack() || !(f.nDotL > 0)) continue;  // no terms (shadeLocal)
-            const Color arriving = m_effects.filteredShadows
-                                       ? saturated(light.intensity * saturated(f.through))
-                                       : light.intensity;
+            f.lit = !f.through.isBlack() && f.nDotL > 0;
+            if (!f.lit) continue;
             const PreparedHit& h = *out.lane(k);
-            f.diffuse = lambert(diffuse[k], arriving, f.nDotL);
-            if (m_effects.has(kHighlights) && addsHighlight(m_scene.materials[h.si.material]))
-                f.highlight = highlightOf(m_scene.materials[h.si.material], arriving, normals[k],
-                                          f.l, -h.dir);
+            const Color arriving =
+                m_effects.filteredShadows ? arrivingThrough(light, f.through) : light.intensity;
+            f.terms = lightTerms(m_effects.has(kHighlights), m_scene.materials[h.si.material],
+                                 diffuse[k], arriving, normals[k], f.l, f.nDotL, -h.dir);
         }
     }
 }
@@ -228,30 +246,21 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
         return result;
     } else {
         if (!shadesLocally(m)) return result;
-        const Color diffuse = diffuseAt(si, m);
-        // Light arriving along l adds its diffuse and highlight terms.
-        const auto add = [&](const Color& arriving, const Vec3& l, double nDotL) {
-            result += lambert(diffuse, arriving, nDotL);
-            if constexpr ((E & kHighlights) != 0)
-                if (addsHighlight(m)) result += highlightOf(m, arriving, n, l, toViewer);
-        };
         // No shadow ray when the normal faces away from the light. The
         // general kernel traces it anyway and then adds nothing, so both
         // kernels produce the same image.
-        if (answered) {  // prepareCameraHits traced the feelers, and has l and n·l
+        if (answered) {  // prepareCameraHits traced the feelers and has the terms
             for (size_t li = 0; li < m_scene.lights.size(); ++li) {
                 const PreparedFeeler& f = answered[li];
-                const bool facing = f.nDotL > 0;
-                if (m_prune && !facing) continue;
+                if (m_prune && !(f.nDotL > 0)) continue;
                 state.counters.count(RayType::Shadow, depth + 1);
                 ++state.spent.traced;
-                if (f.through.isBlack() || !facing) continue;
-                result += f.diffuse;  // the terms add as add() adds them
-                if constexpr ((E & kHighlights) != 0)
-                    if (addsHighlight(m)) result += f.highlight;
+                if (f.lit) addTerms(result, f.terms);
             }
             return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
         }
+        const Color diffuse = diffuseAt(si, m);
+        constexpr bool kHighlighted = (E & kHighlights) != 0;
         ShadowCache::Receiver receiver{};
         if (state.shadows) receiver = state.shadows->receiver(si.object, depth);
         for (size_t li = 0; li < m_scene.lights.size(); ++li) {
@@ -281,14 +290,16 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                                   : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
                 if (state.shadows) slots.remember(hint);
                 if (through.isBlack() || !facing) continue;
-                add(saturated(light.intensity * saturated(through)), l, nDotL);
+                addTerms(result, lightTerms(kHighlighted, m, diffuse, arrivingThrough(light, through),
+                                            n, l, nDotL, toViewer));
             } else {
                 const bool blocked =
                     state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
                                   : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
                 if (state.shadows) slots.remember(hint);
                 if (blocked || !facing) continue;
-                add(light.intensity, l, nDotL);
+                addTerms(result,
+                         lightTerms(kHighlighted, m, diffuse, light.intensity, n, l, nDotL, toViewer));
             }
         }
         return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf
@@ -352,6 +363,7 @@ Color WhittedIntegrator::traceHit(const Ray& ray, const std::optional<Hit>& hit,
     if constexpr (textured(E)) {
         if (hasMaps)
             optics = &texturedOptics.emplaceFrom(
+                // `own` is set: prepared hits are untextured (m_prepareHits).
                 [&] { return m_textures->shade(si.material, *own, hitFootprint); });
     }
     const SurfaceOptics& m = *optics;

@@ -19,6 +19,7 @@
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
 #include "renderer/texture_shading.h"
+#include "shading/radiance_range.h"
 #include "renderer/shadow_cache.h"
 
 namespace raylab {
@@ -129,20 +130,26 @@ private:
     /// distance along the view axis.
     double cameraTMin(const Ray& cameraRay) const;
     /// Ambient, and each light's diffuse and highlight where its feeler
-    /// gets through; `answered` (may be null) holds the feelers by light,
-    /// answered, with their l and n·l (PreparedHit::feelers): they are then
-    /// neither traced nor computed again.
+    /// gets through; `answered` (may be null) holds the feelers by light as
+    /// prepareCameraHits found them, with the terms of the lights that
+    /// arrive (PreparedHit::feelers): the feelers are then counted, not
+    /// traced, and the terms added.
     template <unsigned E>
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      TraceState& state, const PreparedFeeler* answered) const;
-    /// Whether a lit light adds a highlight term at a surface of optics `m`
-    /// (pruned kernels skip a black ks; the general kernel adds its zero).
-    bool addsHighlight(const SurfaceOptics& m) const { return !m_prune || !m.ks.isBlack(); }
-    /// The highlight of light `arriving` along l: Phong or Blinn-Phong, as `m` asks.
-    [[gnu::always_inline]] inline Color highlightOf(const SurfaceOptics& m, const Color& arriving,
-                                                    const Vec3& n, const Vec3& l,
-                                                    const Vec3& toViewer) const;
+    /// The terms light `arriving` along l adds at a surface of optics `m`
+    /// and diffuse reflectance `diffuse` (n the shading normal on the ray's
+    /// side): Lambert's, and the highlight (Phong or Blinn-Phong, as `m`
+    /// asks) where `highlights` (the kernel has them) and `m` has one (the
+    /// general kernel adds even a black ks's zero).
+    LightTerms lightTerms(bool highlights, const SurfaceOptics& m, const Color& diffuse,
+                          const Color& arriving, const Vec3& n, const Vec3& l, double nDotL,
+                          const Vec3& toViewer) const;
+    /// Filtered shadows: the light that arrives through transmittance `through`.
+    static Color arrivingThrough(const Light& light, const Color& through) {
+        return saturated(light.intensity * saturated(through));
+    }
     /// Whether shadeLocal traces feelers from a surface of optics `m` at all
     /// (SPD counts them even from surfaces without a local term).
     bool shadesLocally(const SurfaceOptics& m) const {

@@ -375,7 +375,7 @@ void EmbreeAccelerator::tracePacket(const Ray* rays, const double* tMin, const d
     constexpr int K = kLanes<Packet>;
     alignas(64) Packet packet;
     alignas(64) int valid[K];
-    EmbreeQueryContext lanes[K];
+    EmbreeQueryContext lanes[K];  // init() for traced lanes only: the callbacks reach no other
     for (int k = 0; k < K; ++k) {
         RTCRay r{};
         valid[k] = k < count && toEmbreeRay(rays[k], tMin[k], tMax[k], r) ? -1 : 0;
@@ -450,7 +450,7 @@ void EmbreeAccelerator::occludePacketLanes(const Ray* rays, const double* tMin,
     const bool collect = crossings != nullptr;
     alignas(64) Packet packet;
     alignas(64) int valid[K];
-    EmbreeQueryContext lanes[K];
+    EmbreeQueryContext lanes[K];  // init() for traced lanes only: the callbacks reach no other
     int traced = 0;
     for (int k = 0; k < K; ++k) {
         RTCRay r{};

@@ -24,6 +24,9 @@ namespace raylab {
 
 /// \brief Per-query data reaching the user-geometry callbacks through Embree's
 ///   context pointer (the only pointer Embree guarantees to pass unchanged).
+/// \details Every field is set by init(), which each query calls first; until
+///   then they are indeterminate (a packet keeps 16 lane contexts, and zeroing
+///   all of them showed in its profile). A new field must be set in init().
 struct EmbreeQueryContext {
     RTCIntersectContext rtc;  ///< Embree's context; must stay the first member
     /// The caller's exact double ray, or null: shapes are then tested against
