@@ -19,8 +19,8 @@
 #include "renderer/render_stats.h"
 #include "renderer/scene.h"
 #include "renderer/texture_shading.h"
-#include "shading/radiance_range.h"
 #include "renderer/shadow_cache.h"
+#include "shading/radiance_range.h"
 
 namespace raylab {
 
@@ -75,8 +75,9 @@ public:
     bool tracesPackets() const { return m_accel.tracesPackets(); }
     /// \brief Shades the camera hits of a packet (cameraHits' answers) up to
     ///   their shadow feelers, the feelers to each light asked of the
-    ///   accelerator together (Accelerator::shadowPacket): Li then takes lane
-    ///   k's (out.lane(k)) and brings back the same radiance, bit for bit.
+    ///   accelerator together (Accelerator::shadowPacket), and the terms of
+    ///   the lights that arrive: Li then takes lane k's (out.lane(k)) and
+    ///   brings back the same radiance, bit for bit.
     /// \details `shadows` is the calling thread's shadow cache, as for Li: a
     ///   feeler its guess answers is not asked in the packet. Prepares nothing
     ///   where packets of feelers do not apply or do not pay: no shadows,
