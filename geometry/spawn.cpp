@@ -32,10 +32,8 @@ RaySpawner::RaySpawner(const Vec3& p, const Vec3& ng, double span, const SpawnSe
     if (s.mode == OffsetMode::Robust) m_offset = ng * robustOffset(p, span, s);
 }
 
-SpawnedRay RaySpawner::operator()(const Vec3& dir) const {
-    if (m_settings.mode == OffsetMode::FixedEpsilon)
-        return {Ray{m_p, dir}, m_settings.epsilon / std::max(length(dir), 1e-300)};
-    return {Ray{dot(dir, m_ng) >= 0 ? m_p + m_offset : m_p - m_offset, dir}, 0.0};
+double RaySpawner::fixedEpsilonTMin(const Vec3& dir) const {
+    return m_settings.epsilon / std::max(length(dir), 1e-300);
 }
 
 SpawnedRay spawnRay(const Vec3& p, const Vec3& ng, double span, const Vec3& dir,

@@ -45,9 +45,24 @@ public:
     /// (see the file comment; SurfaceInteraction::span).
     RaySpawner(const Vec3& p, const Vec3& ng, double span, const SpawnSettings& s);
     /// A ray leaving the surface in direction dir, on the side dir points to.
-    SpawnedRay operator()(const Vec3& dir) const;
+    /// Inline, as are its parts: returned through memory, the ray was
+    /// written by a call as 8- and 16-byte stores that its callers read back
+    /// at other offsets, and those reads waited for the stores to reach the
+    /// cache (the hottest instruction of WhittedIntegrator::prepareCameraHits).
+    SpawnedRay operator()(const Vec3& dir) const { return {Ray{origin(dir), dir}, tMin(dir)}; }
+    /// operator()'s ray origin and lower bound, for a caller that stores the
+    /// ray's parts apart (a packet's arrays).
+    Vec3 origin(const Vec3& dir) const {
+        if (m_settings.mode == OffsetMode::FixedEpsilon) return m_p;
+        return dot(dir, m_ng) >= 0 ? m_p + m_offset : m_p - m_offset;
+    }
+    double tMin(const Vec3& dir) const {
+        return m_settings.mode == OffsetMode::FixedEpsilon ? fixedEpsilonTMin(dir) : 0.0;
+    }
 
 private:
+    double fixedEpsilonTMin(const Vec3& dir) const;
+
     Vec3 m_p, m_ng, m_offset;  ///< m_offset = ng · robust offset distance
     const SpawnSettings& m_settings;
 };

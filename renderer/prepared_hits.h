@@ -25,7 +25,7 @@ namespace raylab {
 /// term, then the highlight's where there is one (WhittedIntegrator::lightTerms).
 struct LightTerms {
     Color diffuse;
-    Color highlight;
+    Color highlight;           ///< set where highlighted
     bool highlighted = false;  ///< the highlight is added (a zero added could turn -0 into +0)
 };
 

@@ -21,6 +21,7 @@
 
 #include "geometry/random.h"
 #include "renderer/cancel.h"
+#include "renderer/late_value.h"
 #include "renderer/matte_coverage.h"
 #include "renderer/sampler.h"
 #include "renderer/whitted_integrator.h"
@@ -279,7 +280,9 @@ void renderRowInPackets(const WhittedIntegrator& integrator, const Scene& scene,
         pixel.start(opt, x, y);
         for (int k = 0; k < pixel.count(); ++k) {
             const auto [sx, sy] = pixel.position(k);
-            rays[count] = scene.camera.generateRay(x + sx, y + sy, opt.width, opt.height);
+            rebuildInPlace(rays[count], [&] {
+                return scene.camera.generateRay(x + sx, y + sy, opt.width, opt.height);
+            });
             owner[count] = x - x0;
             if (++count == kPacket) trace();
         }

@@ -105,17 +105,15 @@ void WhittedIntegrator::cameraHits(const Ray* rays, int count, std::optional<Hit
     m_accel.intersectPacket(rays, tMin, tMax, count, out);
 }
 
-[[gnu::always_inline]] inline LightTerms WhittedIntegrator::lightTerms(
-    bool highlights, const SurfaceOptics& m, const Color& diffuse, const Color& arriving,
-    const Vec3& n, const Vec3& l, double nDotL, const Vec3& toViewer) const {
-    LightTerms t;
+[[gnu::always_inline]] inline void WhittedIntegrator::lightTerms(
+    LightTerms& t, bool highlights, const SurfaceOptics& m, const Color& diffuse,
+    const Color& arriving, const Vec3& n, const Vec3& l, double nDotL, const Vec3& toViewer) const {
     t.diffuse = lambert(diffuse, arriving, nDotL);
     t.highlighted = highlights && (!m_prune || !m.ks.isBlack());
     if (t.highlighted)
         t.highlight = m.highlight == Highlight::Phong
                           ? phong(m.ks, m.shininess, arriving, n, l, toViewer)
                           : blinnPhong(m.ks, m.shininess, arriving, n, l, toViewer);
-    return t;
 }
 
 namespace {
@@ -141,13 +139,23 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
     Vec3 normals[K];  // on the side the ray arrives from
     bool feels[K];    // shadeLocal traces feelers from this hit
     Color diffuse[K];  // its diffuse reflectance, where it does
+    // The records first, then what is read from them: read right after the
+    // call that wrote it, a record was read across its stores, and the
+    // reads waited for the stores to reach the cache.
+    PreparedHit* prepared[K];
+    for (int k = 0; k < count; ++k) {
+        if (!hits[k]) continue;
+        PreparedHit& h = *(prepared[k] = &out.prepare(k));
+        h.dir = normalize(rays[k].d);
+        rebuildInPlace(h.si, [&] {
+            return m_scene.surfaceAt(rays[k], *hits[k], m_options.accelOptions.intersect,
+                                     SurfaceDetail::Normals);
+        });
+    }
     for (int k = 0; k < count; ++k) {
         feels[k] = false;
         if (!hits[k]) continue;
-        PreparedHit& h = out.prepare(k);
-        h.dir = normalize(rays[k].d);
-        h.si = m_scene.surfaceAt(rays[k], *hits[k], m_options.accelOptions.intersect,
-                                 SurfaceDetail::Normals);
+        PreparedHit& h = *prepared[k];
         const SurfaceInteraction& si = h.si;
         normals[k] = si.frontFace ? si.ns : -si.ns;
         h.spawn.emplace(si.p, si.frontFace ? si.ng : -si.ng, si.span, m_options.spawn);
@@ -174,9 +182,9 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
             f.l = normalize(toLight);
             f.nDotL = dot(normals[k], f.l);
             if (m_prune && !(f.nDotL > 0)) continue;
-            const SpawnedRay shadow = (*h.spawn)(toLight);
-            feelers[n] = shadow.ray;
-            tMin[n] = shadow.tMin;
+            feelers[n].o = h.spawn->origin(toLight);  // the parts in place (see RaySpawner)
+            feelers[n].d = toLight;
+            tMin[n] = h.spawn->tMin(toLight);
             tMax[n] = reach;
             from[n] = departure(si, toLight);
             if (shadows) {  // the guesses shadeLocal would take (a camera hit is at depth 1)
@@ -202,8 +210,10 @@ void WhittedIntegrator::prepareCameraHits(const Ray* rays, const std::optional<H
             const PreparedHit& h = *out.lane(k);
             const Color arriving =
                 m_effects.filteredShadows ? arrivingThrough(light, f.through) : light.intensity;
-            f.terms = lightTerms(m_effects.has(kHighlights), m_scene.materials[h.si.material],
-                                 diffuse[k], arriving, normals[k], f.l, f.nDotL, -h.dir);
+            // Written in place: a returned record, copied, was read back
+            // across its stores (a stall in the profile).
+            lightTerms(f.terms, m_effects.has(kHighlights), m_scene.materials[h.si.material],
+                       diffuse[k], arriving, normals[k], f.l, f.nDotL, -h.dir);
         }
     }
 }
@@ -290,16 +300,19 @@ Color WhittedIntegrator::shadeLocal(const SurfaceInteraction& si, const SurfaceO
                                   : m_accel.transmittance(shadow.ray, shadow.tMin, tMax, from);
                 if (state.shadows) slots.remember(hint);
                 if (through.isBlack() || !facing) continue;
-                addTerms(result, lightTerms(kHighlighted, m, diffuse, arrivingThrough(light, through),
-                                            n, l, nDotL, toViewer));
+                LightTerms terms;
+                lightTerms(terms, kHighlighted, m, diffuse, arrivingThrough(light, through), n, l,
+                           nDotL, toViewer);
+                addTerms(result, terms);
             } else {
                 const bool blocked =
                     state.shadows ? m_accel.occluded(shadow.ray, shadow.tMin, tMax, from, hint)
                                   : m_accel.occluded(shadow.ray, shadow.tMin, tMax, from);
                 if (state.shadows) slots.remember(hint);
                 if (blocked || !facing) continue;
-                addTerms(result,
-                         lightTerms(kHighlighted, m, diffuse, light.intensity, n, l, nDotL, toViewer));
+                LightTerms terms;
+                lightTerms(terms, kHighlighted, m, diffuse, light.intensity, n, l, nDotL, toViewer);
+                addTerms(result, terms);
             }
         }
         return saturated(result);  // the terms are >= 0: once Inf, the sum stays Inf

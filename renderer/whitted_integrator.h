@@ -139,14 +139,15 @@ private:
     Color shadeLocal(const SurfaceInteraction& si, const SurfaceOptics& m, const Vec3& n,
                      const RaySpawner& spawn, const Vec3& toViewer, int depth,
                      TraceState& state, const PreparedFeeler* answered) const;
-    /// The terms light `arriving` along l adds at a surface of optics `m`
-    /// and diffuse reflectance `diffuse` (n the shading normal on the ray's
-    /// side): Lambert's, and the highlight (Phong or Blinn-Phong, as `m`
-    /// asks) where `highlights` (the kernel has them) and `m` has one (the
-    /// general kernel adds even a black ks's zero).
-    LightTerms lightTerms(bool highlights, const SurfaceOptics& m, const Color& diffuse,
-                          const Color& arriving, const Vec3& n, const Vec3& l, double nDotL,
-                          const Vec3& toViewer) const;
+    /// Sets `t` to the terms light `arriving` along l adds at a surface of
+    /// optics `m` and diffuse reflectance `diffuse` (n the shading normal on
+    /// the ray's side): Lambert's, and the highlight (Phong or Blinn-Phong,
+    /// as `m` asks) where `highlights` (the kernel has them) and `m` has one
+    /// (the general kernel adds even a black ks's zero); t.highlight is left
+    /// as it was where there is none.
+    void lightTerms(LightTerms& t, bool highlights, const SurfaceOptics& m, const Color& diffuse,
+                    const Color& arriving, const Vec3& n, const Vec3& l, double nDotL,
+                    const Vec3& toViewer) const;
     /// Filtered shadows: the light that arrives through transmittance `through`.
     static Color arrivingThrough(const Light& light, const Color& through) {
         return saturated(light.intensity * saturated(through));

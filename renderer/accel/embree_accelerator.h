@@ -105,8 +105,17 @@ public:
     ///   into a Hit: for a triangle {Embree's t, object, triangle, u, v}
     ///   (Scene::surfaceAt recomputes it in double); for a user-geometry hit the
     ///   double record kept in the context, or Embree's float record when the
-    ///   context carried no double ray.
-    std::optional<Hit> decode(const RTCRayHit& rayhit, const EmbreeQueryContext& ctx) const;
+    ///   context carried no double ray. Written into `out` (nothing where the
+    ///   ray missed): a returned record, copied, was read back across its
+    ///   stores, and the reads waited for them (a stall in the profile).
+    void decode(const RTCRayHit& rayhit, const EmbreeQueryContext& ctx,
+                std::optional<Hit>& out) const;
+    /// decode() as a returned value, for callers off the hot path.
+    std::optional<Hit> decode(const RTCRayHit& rayhit, const EmbreeQueryContext& ctx) const {
+        std::optional<Hit> hit;
+        decode(rayhit, ctx, hit);
+        return hit;
+    }
 
     /// \brief Prepares a context for one query of `ray` (may be null) over
     ///   (tMin, tMax), with this accelerator's surface filter.
