@@ -383,7 +383,10 @@ void FrameRenderer::renderWorkItem(int item, FrameBuffers& buffers, WorkCounters
         for (int i0 = r.x0; i0 < r.x1 && !cancelRequested(); i0 += kPacket) {
             const int count = std::min(kPacket, r.x1 - i0);
             for (int k = 0; k < count; ++k)
-                rays[k] = m_scene.camera.generateRay(i0 + k, r.y0, m_options.width, m_options.height);
+                rebuildInPlace(rays[k], [&] {  // not copied from a temporary (late_value.h)
+                    return m_scene.camera.generateRay(i0 + k, r.y0, m_options.width,
+                                                      m_options.height);
+                });
             m_integrator->cameraHits(rays, count, hits);
             m_integrator->prepareCameraHits(rays, hits, count, counters.prepared, &counters.shadows);
             for (int k = 0; k < count; ++k) {
