@@ -45,10 +45,11 @@ public:
     /// (see the file comment; SurfaceInteraction::span).
     RaySpawner(const Vec3& p, const Vec3& ng, double span, const SpawnSettings& s);
     /// A ray leaving the surface in direction dir, on the side dir points to.
-    /// Inline, as are its parts: returned through memory, the ray was
-    /// written by a call as 8- and 16-byte stores that its callers read back
-    /// at other offsets, and those reads waited for the stores to reach the
-    /// cache (the hottest instruction of WhittedIntegrator::prepareCameraHits).
+    /// Inline (only the fixed-epsilon bound, a double in a register, is
+    /// not): returned through memory, the ray was written by a call as 8-
+    /// and 16-byte stores that its callers read back at other offsets, and
+    /// those reads waited for the stores to reach the cache (the hottest
+    /// instruction of WhittedIntegrator::prepareCameraHits).
     SpawnedRay operator()(const Vec3& dir) const { return {Ray{origin(dir), dir}, tMin(dir)}; }
     /// operator()'s ray origin and lower bound, for a caller that stores the
     /// ray's parts apart (a packet's arrays).

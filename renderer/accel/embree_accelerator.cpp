@@ -268,7 +268,7 @@ void EmbreeAccelerator::decode(const RTCRayHit& rayhit, const EmbreeQueryContext
 
 std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, double tMin, double tMax,
                                                 Departure from) const {
-    std::optional<Hit> hit;  // the one result, built where the caller receives it
+    std::optional<Hit> hit;  // the one result: GCC builds it where the caller receives it (NRVO)
     RTCRayHit rayhit;
     if (!toEmbreeRay(ray, tMin, tMax, rayhit.ray)) return hit;
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
