@@ -280,8 +280,9 @@ void renderRowInPackets(const WhittedIntegrator& integrator, const Scene& scene,
         pixel.start(opt, x, y);
         for (int k = 0; k < pixel.count(); ++k) {
             const auto [sx, sy] = pixel.position(k);
+            const double px = x + sx, py = y + sy;  // a lambda may not capture a binding (C++17)
             rebuildInPlace(rays[count], [&] {
-                return scene.camera.generateRay(x + sx, y + sy, opt.width, opt.height);
+                return scene.camera.generateRay(px, py, opt.width, opt.height);
             });
             owner[count] = x - x0;
             if (++count == kPacket) trace();
