@@ -88,9 +88,12 @@ TEST_CASE("sphereflake level 1: nine children of radius 1/6 touching the root") 
 
 TEST_CASE("sphereflake reproduces SPD's balls_s2/s3.nff and balls.nff sphere for sphere") {
     const std::string dir = std::string(RAYLAB_SHARED_DIR) + "/scenes/spd/";
-    for (const auto& [file, level] : {std::pair<std::string, int>{"balls_s2.nff", 2},
-                                      std::pair<std::string, int>{"balls_s3.nff", 3},
-                                      std::pair<std::string, int>{"balls.nff", 4}}) {
+    for (const auto& entry : {std::pair<std::string, int>{"balls_s2.nff", 2},
+                              std::pair<std::string, int>{"balls_s3.nff", 3},
+                              std::pair<std::string, int>{"balls.nff", 4}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& file = entry.first;
+        const auto& level = entry.second;
         const std::string path = dir + file;
         if (!std::filesystem::exists(path)) {
             MESSAGE("skipped: " << path << " not present");

@@ -320,7 +320,10 @@ TEST_CASE("svg plot: librsvg and ImageMagick draw the data, the axes and the lab
                 "(scripts/install-deps.sh --optional)");
         return;
     }
-    for (const auto& [name, command] : tools) {
+    for (const auto& entry : tools) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& name = entry.first;
+        const auto& command = entry.second;
         CAPTURE(name);
         Raster r;
         std::string why;

@@ -232,7 +232,10 @@ TEST_CASE("cli: without an EXR output no AOV layer is computed, and every pixel 
         {json, "--spp 4 --alpha transparent"}, {json, "--adaptive 0.05 --alpha transparent"},
         {nff, "--spd"}, {nff, "--spd --crop 0.3,1,0,0.5"}, {nff, "--spd --alpha transparent"}};
     int k = 0;
-    for (const auto& [scene, flags] : cases) {
+    for (const auto& entry : cases) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& scene = entry.first;
+        const auto& flags = entry.second;
         CAPTURE(flags);
         const std::string n = std::to_string(k++);
         const std::string both = "render " + scene + " " + flags + " --quiet -o " + dir.file(n + ".exr") +

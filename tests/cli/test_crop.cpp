@@ -117,7 +117,10 @@ TEST_CASE("crop: the EXR's data window is the crop, its pixels those of the full
                                                     {"--adaptive 0.02 --adaptive-levels 2", 3},
                                                     {"--spd --width 37 --height 23", 2},
                                                     {"--min-weight 0.05 --depth 8", 1}};
-    for (const auto& [mode, matteLayers] : modes) {
+    for (const auto& entry : modes) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& mode = entry.first;
+        const auto& matteLayers = entry.second;
         CAPTURE(mode);
         const std::string common = " --float -q --threads 2 " + mode;
         REQUIRE(cli::run("render " + scene + " -o " + dir.file("full.exr") + " --png " +

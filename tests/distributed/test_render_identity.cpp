@@ -107,7 +107,10 @@ TEST_CASE("renderIdentity: every option that changes pixels is in the settings")
         {"aovs", [](RenderOptions& o) { o.wantAovs = false; }},
     };
     const RenderOptions base;
-    for (const auto& [name, change] : changes) {
+    for (const auto& entry : changes) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& name = entry.first;
+        const auto& change = entry.second;
         RenderOptions o = base;
         change(o);
         const std::string why = disagreement(identity(base), identity(o), "rank 1");

@@ -310,10 +310,13 @@ TEST_CASE("polygon grid: the gear face answers exactly as the watertight test") 
 }
 
 TEST_CASE("polygon grid: far from the origin, tiny and huge polygons") {
-    for (const auto& [centre, scale] : {std::pair<Vec3, double>{{1e6, -2e6, 3e5}, 1.0},
-                                        {{0.5, 0.25, -1}, 1e-6},
-                                        {{1e3, 1e3, 1e3}, 1e5},
-                                        {{-7e7, 1e-3, 0}, 1e-2}}) {
+    for (const auto& entry : {std::pair<Vec3, double>{{1e6, -2e6, 3e5}, 1.0},
+                              {{0.5, 0.25, -1}, 1e-6},
+                              {{1e3, 1e3, 1e3}, 1e5},
+                              {{-7e7, 1e-3, 0}, 1e-2}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& centre = entry.first;
+        const auto& scale = entry.second;
         CAPTURE(centre.x);
         CAPTURE(scale);
         const auto gear = makeGridPolygon(gearFace(centre, scale), FillRule::EvenOdd);
@@ -328,11 +331,14 @@ TEST_CASE("polygon grid: extreme scales, where the watertight test's products un
     // the watertight test's answer, and beyond it (products of coordinates
     // of 1e-160 underflow, of 1e154 overflow) it is not built or not asked.
     // Before the scale limits, 1e-160 gave 5 differences in these 400,000 rays.
-    for (const auto& [centre, scale] : {std::pair<Vec3, double>{{0, 0, 0}, 1e-160},
-                                        {{3e-160, -1e-160, 2e-160}, 1e-160},
-                                        {{0, 0, 0}, 1e-100},
-                                        {{0, 0, 0}, 1e100},
-                                        {{0, 0, 0}, 1e154}}) {
+    for (const auto& entry : {std::pair<Vec3, double>{{0, 0, 0}, 1e-160},
+                              {{3e-160, -1e-160, 2e-160}, 1e-160},
+                              {{0, 0, 0}, 1e-100},
+                              {{0, 0, 0}, 1e100},
+                              {{0, 0, 0}, 1e154}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& centre = entry.first;
+        const auto& scale = entry.second;
         CAPTURE(centre.x);
         CAPTURE(scale);
         const auto gear = makeGridPolygon(gearFace(centre, scale), FillRule::EvenOdd);

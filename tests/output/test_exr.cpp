@@ -443,8 +443,11 @@ TEST_CASE("exr: the Cryptomatte layers written are those the ranks need, with th
 
     // (ranks asked, layers written): one layer per two ranks, never fewer
     // than pixel 0's three objects need, however few were asked for.
-    for (const auto& [ranks, layers] : {std::pair{1, 2}, std::pair{2, 2}, std::pair{3, 2},
-                                        std::pair{4, 2}, std::pair{5, 3}, std::pair{6, 3}}) {
+    for (const auto& entry : {std::pair{1, 2}, std::pair{2, 2}, std::pair{3, 2},
+                              std::pair{4, 2}, std::pair{5, 3}, std::pair{6, 3}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& ranks = entry.first;
+        const auto& layers = entry.second;
         CAPTURE(ranks);
         ExrOptions o = all;
         o.matteRanks = ranks;
@@ -452,7 +455,10 @@ TEST_CASE("exr: the Cryptomatte layers written are those the ranks need, with th
         writeExr(path, f, o);
         const auto written = cryptoChannels(path);
         CHECK(written.size() == size_t(4 * layers));
-        for (const auto& [name, plane] : reference) {
+        for (const auto& channel : reference) {
+            // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+            const auto& name = channel.first;
+            const auto& plane = channel.second;
             CAPTURE(name);
             if (written.count(name)) {
                 CHECK(std::memcmp(written.at(name).data(), plane.data(), plane.size() * 4) == 0);

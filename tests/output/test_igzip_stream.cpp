@@ -139,7 +139,10 @@ TEST_CASE("igzip stream: the bytes follow the address bucket, so placed streams 
 
     int differing = 0;  // (input, path) pairs whose bytes differ between the buckets
     for (const std::vector<uint8_t>& in : sampleInputs()) {
-        for (const auto& [level, stateless] : {std::pair{1, false}, {1, true}, {2, true}}) {
+        for (const auto& entry : {std::pair{1, false}, {1, true}, {2, true}}) {
+            // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+            const auto& level = entry.first;
+            const auto& stateless = entry.second;
             CAPTURE(in.size());
             CAPTURE(level);
             CAPTURE(stateless);

@@ -346,7 +346,10 @@ TEST_CASE("output: the Cryptomatte layers are those the sampling can fill, whate
     const std::pair<std::string, int> cases[] = {
         {"", 1}, {"--spp 2", 1}, {"--spp 3", 2}, {"--spp 4", 2}, {"--spd", 2},
         {"--spp 5", 3}, {"--spp 16", 3}, {"--adaptive 0.1", 3}};
-    for (const auto& [flags, layers] : cases) {
+    for (const auto& entry : cases) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& flags = entry.first;
+        const auto& layers = entry.second;
         CAPTURE(flags);
         const std::string exr = dir.file("m.exr");
         const auto r = runCommand(raylabCmd("render " + dir.file("balls.json") + " -o " + exr +

@@ -169,7 +169,10 @@ std::vector<uint8_t> decodeWithLibpng(const std::vector<unsigned char>& bytes, i
 TEST_CASE("png: encodePng round-trips through libpng (noise, gradients, 1x1, strips)") {
     std::mt19937 rng(7);
     const std::pair<int, int> sizes[] = {{1, 1}, {1, 300}, {777, 2}, {64, 48}, {257, 129}, {70000, 1}};
-    for (const auto& [w, h] : sizes) {
+    for (const auto& entry : sizes) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& w = entry.first;
+        const auto& h = entry.second;
         for (int pattern = 0; pattern < 3; ++pattern) {
             CAPTURE(w);
             CAPTURE(h);

@@ -26,7 +26,10 @@ bool allBlank(const Plane& plane, size_t count, const Value& blank) {
 
 TEST_CASE("frame buffers: Film's constructor gives every plane its blank value") {
     // Small (operator new) and large (huge-page mappings) planes, a crop window.
-    for (const auto& [w, h] : {std::pair{3, 2}, std::pair{512, 512}, std::pair{301, 77}}) {
+    for (const auto& entry : {std::pair{3, 2}, std::pair{512, 512}, std::pair{301, 77}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& w = entry.first;
+        const auto& h = entry.second;
         CAPTURE(w);
         CAPTURE(h);
         const Film got(w, h, 5, 9, w + 20, h + 30);

@@ -35,8 +35,12 @@ TEST_CASE("plane arena: 64-byte slots front to back, nothing once full") {
 }
 
 TEST_CASE("film: every plane in one arena, sized for exactly them, blank values as before") {
-    for (const auto& [w, h, ranks] : {std::tuple{512, 512, 4}, std::tuple{640, 480, 6},
-                                     std::tuple{3, 2, 1}}) {
+    for (const auto& entry : {std::tuple{512, 512, 4}, std::tuple{640, 480, 6},
+                              std::tuple{3, 2, 1}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& w = std::get<0>(entry);
+        const auto& h = std::get<1>(entry);
+        const auto& ranks = std::get<2>(entry);
         CAPTURE(w);
         const Film film(w, h, 0, 0, w, h, ranks);
         const size_t n = size_t(w) * size_t(h);

@@ -58,7 +58,10 @@ TEST_CASE("render option names: each table holds the documented words, in order"
 
 TEST_CASE("render option names: makeAccelerator builds the accelerator of each kind") {
     const Scene s = oneSphere();
-    for (const auto& [word, kind] : acceleratorNames()) {
+    for (const auto& entry : acceleratorNames()) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& word = entry.first;
+        const auto& kind = entry.second;
         CAPTURE(word);
         CHECK(makeAccelerator(kind, s)->name() == word);
     }

@@ -109,7 +109,10 @@ TEST_CASE("command line: an output that is a FIFO (or any non-file node) is refu
     const std::string scene = dir.write("scene.json", kScene);
     const std::vector<std::pair<std::string, std::string>> outputs = {
         {"-o", "node.exr"}, {"--png", "node.png"}, {"--stats", "node.json"}};
-    for (const auto& [flag, name] : outputs) {
+    for (const auto& entry : outputs) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& flag = entry.first;
+        const auto& name = entry.second;
         const std::string fifo = dir.file(name);
         REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
         std::vector<std::string> args{"render", scene, "--width", "8", "--height", "8", "--quiet"};

@@ -81,7 +81,10 @@ TEST_CASE("differentials off a sphere: transfer, reflection and refraction vs th
     sphere->setSidedness(Sidedness::Both);  // the refracted rays leave from inside
     const double eta = 1.0 / 1.5;
     // Pixels whose rays hit the sphere at various angles of incidence.
-    for (const auto& [px, py] : {std::pair{32.0, 24.0}, std::pair{40.3, 20.7}, std::pair{25.5, 31.25}}) {
+    for (const auto& entry : {std::pair{32.0, 24.0}, std::pair{40.3, 20.7}, std::pair{25.5, 31.25}}) {
+        // No structured binding: CAPTURE's lambda may not capture one (clang, C++17).
+        const auto& px = entry.first;
+        const auto& py = entry.second;
         CAPTURE(px);
         CAPTURE(py);
         const auto at = [&](double x, double y) { return probe(cam, *sphere, cam.generateRay(x, y, kW, kH)); };
